@@ -1,0 +1,90 @@
+#include "kvd/kernel/exact_kernel.hpp"
+
+#include "kvd/kernel/descartes.hpp"
+
+namespace kvd {
+
+namespace {
+
+int three_way(const mpq_class& a, const mpq_class& b) {
+  const int c = cmp(a, b);
+  return (c > 0) - (c < 0);
+}
+
+// Whether the algebraic (non-rational) value x is a root of g, where g divides
+// x's defining polynomial: g then has at most x as root in x's interval and is
+// non-zero at its ends, so a sign change of g there decides.
+bool is_root_of_divisor(const zpoly::ZPoly& g, const Exact_time& x) {
+  return zpoly::sign_at(g, x.lower()) != zpoly::sign_at(g, x.upper());
+}
+
+// Whether two algebraic values with overlapping intervals are equal.
+bool equal_algebraic(const Exact_time& a, const Exact_time& b) {
+  const zpoly::ZPoly g = zpoly::gcd(a.polynomial(), b.polynomial());
+  if (zpoly::degree(g) < 1) return false;
+  if (!is_root_of_divisor(g, a) || !is_root_of_divisor(g, b)) return false;
+  // Both are roots of g, and the only roots of g in the union of their
+  // (overlapping) intervals. g is square-free and non-zero at the ends of the
+  // union, so the roots coincide exactly when g changes sign across the union.
+  const mpq_class& lo = a.lower() < b.lower() ? a.lower() : b.lower();
+  const mpq_class& hi = a.upper() > b.upper() ? a.upper() : b.upper();
+  return zpoly::sign_at(g, lo) != zpoly::sign_at(g, hi);
+}
+
+}  // namespace
+
+int Exact_kernel::compare(const Time& a, const Time& b) const {
+  bool known_distinct = false;
+  for (;;) {
+    if (a.is_rational() && b.is_rational()) return three_way(a.rational(), b.rational());
+    if (b.is_rational()) return a.compare_refining(b.rational());
+    if (a.is_rational()) return -b.compare_refining(a.rational());
+    if (a.upper() <= b.lower()) return -1;
+    if (b.upper() <= a.lower()) return 1;
+    if (!known_distinct) {
+      if (equal_algebraic(a, b)) return 0;
+      known_distinct = true;
+    }
+    // Distinct numbers: refining separates them. A refinement may land on a
+    // root and turn a value rational, hence the re-dispatch each round.
+    a.refine();
+    b.refine();
+  }
+}
+
+int Exact_kernel::sign_at(const Poly& p, const Time& t) const {
+  const zpoly::ZPoly z = zpoly::to_zpoly(p);  // a positive multiple: same signs
+  if (z.empty()) return 0;
+  if (t.is_rational()) return zpoly::sign_at(z, t.rational());
+  const zpoly::ZPoly g = zpoly::gcd(z, t.polynomial());
+  if (zpoly::degree(g) >= 1 && is_root_of_divisor(g, t)) return 0;
+  // p(t) != 0: shrink t's interval until p has no root in it.
+  while (!t.is_rational() && zpoly::descartes_bound(z, t.lower(), t.upper()) != 0) t.refine();
+  if (t.is_rational()) return zpoly::sign_at(z, t.rational());
+  return zpoly::sign_at(z, (t.lower() + t.upper()) / 2);
+}
+
+int Exact_kernel::sign_after(const Poly& p, const Time& t) const {
+  for (Poly d = p; !d.is_zero(); d = d.derivative()) {
+    const int s = sign_at(d, t);
+    if (s != 0) return s;
+  }
+  return 0;
+}
+
+std::optional<Exact_time> Exact_kernel::next_root(const Poly& p, const Time& after) const {
+  const zpoly::ZPoly q = zpoly::odd_part(zpoly::to_zpoly(p));
+  if (zpoly::degree(q) < 1) return std::nullopt;
+  const mpq_class bound = zpoly::root_bound(q);
+  const mpq_class& lo = after.lower();  // == after when rational
+  if (!(lo < bound)) return std::nullopt;
+  std::optional<Exact_time> found;
+  isolate_real_roots(q, lo, bound, [&](const Exact_time& r) {
+    if (!after.is_rational() && compare(r, after) <= 0) return false;
+    found = r;
+    return true;
+  });
+  return found;
+}
+
+}  // namespace kvd
