@@ -1,1 +1,147 @@
+// The exact kernel's own root isolator against CGAL's Algebraic_kernel_d_1 on
+// 10,000 random integer polynomials: dense ones with coefficients up to 200
+// bits, products with double and triple factors, clusters of roots 2^-110
+// (< 1e-30) apart, and queries exactly at a root. For each polynomial the whole
+// chain next_root(p, after), next_root(p, that root), ... must match CGAL's
+// roots of odd multiplicity after `after`, root for root, decided exactly.
 #include <catch2/catch.hpp>
+#include <sstream>
+
+#include "cgal_roots.hpp"
+#include "kvd/kernel/exact_kernel.hpp"
+#include "random_poly.hpp"
+
+namespace {
+
+using kvd::Exact_time;
+using kvd::oracle::Cgal_roots;
+using kvd::zpoly::ZPoly;
+
+const kvd::Exact_kernel k;
+
+std::string show(const ZPoly& p) {
+  std::ostringstream os;
+  for (const auto& c : p) os << c.get_str() << " ";
+  return os.str();
+}
+
+// CGAL's comparison of its root i with our instant t.
+int cgal_compare(const Cgal_roots& cgal, std::size_t i, const Exact_time& t) {
+  if (t.is_rational()) return cgal.compare(i, t.rational());
+  return cgal.compare(i, t.polynomial(), t.lower(), t.upper());
+}
+
+// Walks the chain of sign-changing roots after `after`; returns a description
+// of the first disagreement with CGAL, or "" and adds the roots checked.
+std::string check_chain(const ZPoly& p, const mpq_class& after, long& roots_checked) {
+  const Cgal_roots cgal(p);
+  const kvd::Poly<mpq_class> poly = kvd::zpoly::to_poly(p);
+  std::optional<std::size_t> expected = cgal.next_sign_change_after(after);
+  Exact_time t(after);
+  for (int step = 0;; ++step) {
+    const std::optional<Exact_time> got = k.next_root(poly, t);
+    if (!expected && !got) return "";
+    std::ostringstream why;
+    why << "p = [" << show(p) << "], after = " << after.get_str() << ", step " << step << ": ";
+    if (!expected) return why.str() + "CGAL has no further root, we found " + got->to_string();
+    if (!got) return why.str() + "we found no root, CGAL has one near " + std::to_string(cgal.to_double(*expected));
+    if (cgal_compare(cgal, *expected, *got) != 0)
+      return why.str() + "our root " + got->to_string() + " differs from CGAL's " +
+             std::to_string(cgal.to_double(*expected));
+    ++roots_checked;
+    t = *got;
+    expected = cgal.next_sign_change_after_root(*expected);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("next_root agrees with CGAL's Algebraic_kernel_d_1 on 10,000 polynomials", "[roots][cgal]") {
+  kvd::testing::Random_polys rnd(20261121);
+  long roots_checked = 0, polys = 0;
+  std::vector<std::string> failures;
+  auto check = [&](const ZPoly& p, const mpq_class& after) {
+    ++polys;
+    const std::string f = check_chain(p, after, roots_checked);
+    if (!f.empty() && failures.size() < 5) failures.push_back(f);
+  };
+  auto degree = [&](int lo, int hi) { return lo + static_cast<int>(rnd.below(static_cast<unsigned long>(hi - lo + 1))); };
+
+  SECTION("dense, coefficients up to 200 bits") {
+    for (int i = 0; i < 4000; ++i) check(rnd.dense(degree(1, 12), 1 + rnd.below(200)), rnd.rational(6));
+  }
+  SECTION("double and triple factors") {
+    for (int i = 0; i < 2500; ++i) check(rnd.repeated_factors(degree(6, 12), 1 + rnd.below(40)), rnd.rational(6));
+  }
+  SECTION("clusters of roots 2^-110 apart") {
+    for (int i = 0; i < 1500; ++i) {
+      const ZPoly p = rnd.cluster(degree(2, 4), 110, degree(0, 6), 1 + rnd.below(64));
+      // Query from below the cluster, and from the middle of the cluster.
+      check(p, mpq_class(-1) << 200);
+    }
+  }
+  SECTION("the query instant is itself a root") {
+    for (int i = 0; i < 2000; ++i) {
+      const mpq_class r = rnd.rational(1 + rnd.below(60));
+      check(rnd.with_root(r, degree(1, 12), 1 + rnd.below(100)), r);
+    }
+  }
+  WARN(polys << " polynomials, " << roots_checked << " roots checked against CGAL");
+  for (const auto& f : failures) UNSCOPED_INFO(f);
+  CHECK(failures.empty());
+  CHECK(roots_checked > polys / 2);
+}
+
+TEST_CASE("compare agrees with CGAL on roots of polynomials with common factors", "[roots][cgal]") {
+  kvd::testing::Random_polys rnd(7);
+  int equal_pairs = 0, pairs = 0, mismatches = 0;
+  for (int i = 0; i < 300; ++i) {
+    const ZPoly f = rnd.dense(1 + static_cast<int>(rnd.below(4)), 30);
+    const ZPoly p = kvd::zpoly::mul(f, rnd.dense(1 + static_cast<int>(rnd.below(4)), 30));
+    const ZPoly q = kvd::zpoly::mul(f, rnd.dense(1 + static_cast<int>(rnd.below(4)), 30));
+    const Cgal_roots cgal_p(p);
+    std::vector<Exact_time> ours_p, ours_q;
+    for (Exact_time t(mpq_class(-1) << 300); auto n = k.next_root(kvd::zpoly::to_poly(p), t);) ours_p.push_back(t = *n);
+    for (Exact_time t(mpq_class(-1) << 300); auto n = k.next_root(kvd::zpoly::to_poly(q), t);) ours_q.push_back(t = *n);
+    // Map our roots of p to CGAL's sign-changing roots of p, in order.
+    std::vector<std::size_t> cgal_index;
+    for (std::size_t j = 0; j < cgal_p.size(); ++j)
+      if (cgal_p.multiplicity(j) % 2 == 1) cgal_index.push_back(j);
+    REQUIRE(cgal_index.size() == ours_p.size());
+    for (std::size_t a = 0; a < ours_p.size(); ++a)
+      for (const auto& b : ours_q) {
+        ++pairs;
+        const int cgal = cgal_compare(cgal_p, cgal_index[a], b);
+        equal_pairs += cgal == 0;
+        mismatches += k.compare(ours_p[a], b) != cgal;
+      }
+  }
+  WARN(pairs << " pairs compared, " << equal_pairs << " equal");
+  CHECK(mismatches == 0);
+  CHECK(equal_pairs > 50);  // the common factor makes equal pairs frequent
+}
+
+TEST_CASE("sign_at an algebraic instant agrees with CGAL", "[roots][cgal]") {
+  kvd::testing::Random_polys rnd(99);
+  int zeros = 0, mismatches = 0, checks = 0;
+  for (int i = 0; i < 300; ++i) {
+    const ZPoly g = rnd.dense(1 + static_cast<int>(rnd.below(3)), 20);
+    const ZPoly p = kvd::zpoly::mul(g, rnd.dense(1 + static_cast<int>(rnd.below(5)), 40));
+    // f shares g with p half of the time, so it vanishes at some roots.
+    const ZPoly f = rnd.below(2) ? kvd::zpoly::mul(g, rnd.dense(2, 40)) : rnd.dense(1 + static_cast<int>(rnd.below(6)), 40);
+    const Cgal_roots cgal(p);
+    Exact_time t(mpq_class(-1) << 300);
+    std::optional<std::size_t> idx = cgal.next_sign_change_after(t.rational());
+    for (; auto n = k.next_root(kvd::zpoly::to_poly(p), t); idx = cgal.next_sign_change_after_root(*idx)) {
+      t = *n;
+      REQUIRE(idx);
+      const int expected = cgal.sign_at(*idx, f);
+      zeros += expected == 0;
+      mismatches += k.sign_at(kvd::zpoly::to_poly(f), t) != expected;
+      ++checks;
+    }
+  }
+  WARN(checks << " signs compared, " << zeros << " zero");
+  CHECK(mismatches == 0);
+  CHECK(zeros > 20);
+}

@@ -1,6 +1,8 @@
 #include "kvd/kernel/exact_time.hpp"
 
 #include <cassert>
+#include <mpfr.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -19,7 +21,11 @@ Exact_time::Exact_time(const mpq_class& r) : rep_(std::make_shared<Rep>()) {
 
 Exact_time Exact_time::algebraic(zpoly::ZPoly p, const mpq_class& lo, const mpq_class& hi) {
   assert(zpoly::degree(p) >= 1 && lo < hi);
-  if (zpoly::degree(p) == 1) return Exact_time(mpq_class(-p[0], p[1]));
+  if (zpoly::degree(p) == 1) {
+    mpq_class r(-p[0], p[1]);
+    r.canonicalize();  // the denominator may be negative
+    return Exact_time(r);
+  }
   Exact_time t;
   t.rep_->p = std::move(p);
   t.rep_->lo = lo;
@@ -73,7 +79,14 @@ double Exact_time::to_double() const {
     }
     refine();
   }
-  return rep_->rational ? rep_->lo.get_d() : mpq_class((rep_->lo + rep_->hi) / 2).get_d();
+  // Round to nearest (mpq_class::get_d truncates).
+  const mpq_class v = rep_->rational ? rep_->lo : mpq_class((rep_->lo + rep_->hi) / 2);
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, v.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
 }
 
 std::string Exact_time::to_string() const {

@@ -18,11 +18,18 @@ FT magnitude(const FT& x) {
   return x < FT(0) ? FT(-x) : x;
 }
 
+int precision_bits(double) { return 53; }
+int precision_bits(const Mpfr_number& x) { return static_cast<int>(x.precision()); }
+
 // p(a) and p(b) of opposite signs: bisect until the midpoint is no longer
-// representable between them.
+// representable between them, or after 2p + 64 halvings (p the precision in
+// bits): when the root is exactly zero the midpoints can approach it through
+// the exponent range for ever (MPFR's is practically unbounded), and by then
+// the interval is far below any meaningful time resolution.
 template <class FT>
 FT bisect(const Poly<FT>& p, FT a, FT b, int sign_a) {
-  for (;;) {
+  const int halvings = 2 * precision_bits(a) + 64;
+  for (int i = 0; i < halvings; ++i) {
     FT m = (a + b) / FT(2);
     if (!(a < m && m < b)) return m;
     const int s = exact_sign(p(m));
@@ -32,6 +39,7 @@ FT bisect(const Poly<FT>& p, FT a, FT b, int sign_a) {
     else
       b = std::move(m);
   }
+  return (a + b) / FT(2);
 }
 
 }  // namespace

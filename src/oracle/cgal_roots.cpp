@@ -50,6 +50,10 @@ int Cgal_roots::compare(std::size_t i, const std::vector<mpz_class>& q, const mp
   return static_cast<int>(impl_->kernel.compare_1_object()(impl_->roots.at(i).first, x));
 }
 
+int Cgal_roots::sign_at(std::size_t i, const std::vector<mpz_class>& f) const {
+  return static_cast<int>(impl_->kernel.sign_at_1_object()(to_cgal(f), impl_->roots.at(i).first));
+}
+
 std::optional<std::size_t> Cgal_roots::next_sign_change_after(const mpq_class& r) const {
   const Bound b = to_cgal(r);
   for (std::size_t i = 0; i < impl_->roots.size(); ++i)

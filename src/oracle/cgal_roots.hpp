@@ -30,6 +30,8 @@ public:
   // Root i compared with the unique root of the square-free q in (lo, hi).
   int compare(std::size_t i, const std::vector<mpz_class>& q, const mpq_class& lo,
               const mpq_class& hi) const;
+  // The sign of the integer polynomial f at root i.
+  int sign_at(std::size_t i, const std::vector<mpz_class>& f) const;
   // The first root of odd multiplicity greater than r, by CGAL's comparisons.
   std::optional<std::size_t> next_sign_change_after(const mpq_class& r) const;
   // The first root of odd multiplicity greater than root j.

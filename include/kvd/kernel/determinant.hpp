@@ -14,7 +14,8 @@ using Matrix4 = std::array<std::array<R, 4>, 4>;
 // the last two: 12 products of minors instead of 24 products of four entries.
 template <class R>
 R det4(const Matrix4<R>& m) {
-  auto minor = [&](int r, int i, int j) { return m[r][i] * m[r + 1][j] - m[r][j] * m[r + 1][i]; };
+  // Returns R, not auto: GMP expression templates would dangle.
+  auto minor = [&](int r, int i, int j) -> R { return m[r][i] * m[r + 1][j] - m[r][j] * m[r + 1][i]; };
   R s = minor(0, 0, 1) * minor(2, 2, 3);
   s -= minor(0, 0, 2) * minor(2, 1, 3);
   s += minor(0, 0, 3) * minor(2, 1, 2);
