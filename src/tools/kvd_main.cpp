@@ -1,9 +1,11 @@
 // The kvd command-line tool. Exit status: 0 success, 1 failed check, 2 bad
 // input or usage (DESIGN.md section 6).
-#include <cstring>
 #include <iostream>
 #include <string>
+#include <vector>
 
+#include "cli.hpp"
+#include "kvd/scene/scene_io.hpp"
 #include "kvd/version.hpp"
 
 namespace {
@@ -13,13 +15,15 @@ const char* const usage =
     "\n"
     "Kinetic Vertical Decomposition trees with exact arithmetic.\n"
     "\n"
+    "commands:\n"
+    "  info SCENE     validate a scene file and print its counts\n"
+    "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
     "  --version      print the version and exit\n"
     "\n"
-    "No commands are available yet in this version; the scene, tree and\n"
-    "simulation commands (info, generate, build, order, render, simulate,\n"
-    "diff, bench, certify) come with the library layers that implement them.\n";
+    "Every command takes --help. Exit status: 0 success, 1 failed check,\n"
+    "2 bad input or usage.\n";
 
 }  // namespace
 
@@ -28,15 +32,28 @@ int main(int argc, char** argv) {
     std::cerr << usage;
     return 2;
   }
-  const std::string arg = argv[1];
-  if (arg == "-h" || arg == "--help") {
+  const std::string command = argv[1];
+  if (command == "-h" || command == "--help") {
     std::cout << usage;
     return 0;
   }
-  if (arg == "--version") {
+  if (command == "--version") {
     std::cout << "kvd " << kvd::version << "\n";
     return 0;
   }
-  std::cerr << "kvd: unknown command or option '" << arg << "' (see kvd --help)\n";
-  return 2;
+  kvd::cli::Args args(command, std::vector<std::string>(argv + 2, argv + argc));
+  try {
+    if (command == "info") return kvd::cli::info(args);
+    std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
+    return 2;
+  } catch (const kvd::cli::Usage_error& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const kvd::scene::Scene_error& e) {
+    std::cerr << "kvd " << command << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "kvd " << command << ": out of memory\n";
+    return 2;
+  }
 }

@@ -1,0 +1,37 @@
+// A JSON document tree that keeps what the scene format needs and
+// nlohmann::json drops: the raw text of every number (numbers are exact) and
+// the order of keys. Built by a SAX reader that rejects duplicate keys and
+// nesting deeper than `max_depth` while parsing, so no input can exhaust the
+// stack or the memory through nesting.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace kvd::scene {
+
+struct Json_value {
+  enum class Kind { null, boolean, number, string, array, object };
+  Kind kind = Kind::null;
+  bool boolean = false;
+  std::string text;  // a number's raw text, or a string's value
+  std::vector<Json_value> items;                          // array
+  std::vector<std::pair<std::string, Json_value>> members;  // object, in file order
+
+  const Json_value* find(const std::string& key) const;
+};
+
+inline constexpr int max_depth = 64;
+// Files above this size are refused before parsing.
+inline constexpr std::size_t max_file_bytes = std::size_t(64) << 20;
+
+// Parses `text`; on failure returns false and sets `error` (with the byte
+// offset). Strict JSON: one value, nothing after it.
+bool parse_json(const std::string& text, Json_value& out, std::string& error);
+
+const char* kind_name(Json_value::Kind k);
+
+}  // namespace kvd::scene

@@ -1,0 +1,35 @@
+// Reading and writing scene files (`kvd-scene/1`, the scene format page).
+//
+// Every rejection throws Scene_error with a message "SOURCE: /json/pointer:
+// what was expected", where SOURCE is the file name and the pointer is the
+// JSON place (RFC 6901), "/" for the document itself.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "kvd/scene/scene.hpp"
+
+namespace kvd::scene {
+
+class Scene_error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Load_options {
+  // Replaces the file's priority (seed or explicit order) by this seed.
+  std::optional<std::uint64_t> seed;
+  // Skips the check that triangles are disjoint at the start time.
+  bool allow_intersecting = false;
+};
+
+Scene read_scene(const std::string& text, const std::string& source, const Load_options& options = {});
+Scene load_scene(const std::string& path, const Load_options& options = {});
+// The scene as a `kvd-scene/1` document; numbers are written as exact strings.
+// read_scene(write_scene(s)) == s.
+std::string write_scene(const Scene& s);
+
+}  // namespace kvd::scene

@@ -1,0 +1,301 @@
+// The scene reader: JSON tree to Scene, with every rejection of the format
+// page reported at its JSON place.
+#include <fstream>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+
+#include "kvd/scene/exact_number.hpp"
+#include "kvd/scene/json_value.hpp"
+#include "kvd/scene/scene_io.hpp"
+#include "kvd/scene/triangle_intersection.hpp"
+
+namespace kvd::scene {
+
+namespace {
+
+using Kind = Json_value::Kind;
+
+class Reader {
+public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& at, const std::string& what) const {
+    throw Scene_error(source_ + ": " + (at.empty() ? "/" : at) + ": " + what);
+  }
+
+  void expect(const Json_value& v, Kind k, const std::string& at) const {
+    if (v.kind != k) fail(at, std::string("expected ") + kind_name(k) + ", found " + kind_name(v.kind));
+  }
+
+  // An object with only the given keys, all of `required` among them.
+  void expect_object(const Json_value& v, const std::string& at, std::initializer_list<const char*> allowed,
+                     std::initializer_list<const char*> required) const {
+    expect(v, Kind::object, at);
+    for (const auto& [key, value] : v.members) {
+      bool known = false;
+      for (const char* a : allowed) known = known || key == a;
+      if (!known) {
+        std::string list;
+        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        fail(at + "/" + key, "unknown key \"" + key + "\" (expected one of: " + list + ")");
+      }
+    }
+    for (const char* r : required)
+      if (!v.find(r)) fail(at, std::string("missing required key \"") + r + "\"");
+  }
+
+  Q number(const Json_value& v, const std::string& at) const {
+    if (v.kind != Kind::number && v.kind != Kind::string)
+      fail(at, std::string("expected a number, found ") + kind_name(v.kind));
+    std::string why;
+    auto q = parse_exact_number(v.text, why);
+    if (!q) fail(at, why + ": \"" + v.text + "\"");
+    return *q;
+  }
+
+  QPoly poly(const Json_value& v, const std::string& at) const {
+    if (v.kind != Kind::array) return QPoly(number(v, at));
+    std::vector<Q> c;
+    for (std::size_t i = 0; i < v.items.size(); ++i) c.push_back(number(v.items[i], at + "/" + std::to_string(i)));
+    return QPoly(std::move(c));
+  }
+
+  const std::vector<Json_value>& array(const Json_value& v, const std::string& at, std::size_t size = 0) const {
+    expect(v, Kind::array, at);
+    if (size && v.items.size() != size)
+      fail(at, "expected an array of " + std::to_string(size) + " entries, found " + std::to_string(v.items.size()));
+    return v.items;
+  }
+
+  Motion_point point4(const Json_value& v, const std::string& at) const {
+    const auto& items = array(v, at, 4);
+    Motion_point p;
+    for (int i = 0; i < 4; ++i) p[i] = poly(items[static_cast<std::size_t>(i)], at + "/" + std::to_string(i));
+    if (p[0].is_zero() && p[1].is_zero() && p[2].is_zero() && p[3].is_zero())
+      fail(at, "a point4 that is identically [0, 0, 0, 0]");
+    return p;
+  }
+
+  std::uint64_t unsigned_integer(const Json_value& v, const std::string& at) const {
+    if (v.kind != Kind::number || v.text.find_first_not_of("0123456789") != std::string::npos)
+      fail(at, "expected a non-negative integer");
+    const mpz_class z(v.text, 10);
+    if (z > mpz_class("18446744073709551615")) fail(at, "integer above 2^64 - 1");
+    return std::stoull(v.text);
+  }
+
+  std::size_t index(const Json_value& v, const std::string& at, std::size_t n, const char* what) const {
+    if (v.kind != Kind::number || v.text.find_first_not_of("0123456789") != std::string::npos)
+      fail(at, std::string("expected ") + what + " index (a non-negative integer)");
+    if (v.text.size() > 18 || std::stoull(v.text) >= n)
+      fail(at, std::string(what) + " index " + v.text + " out of range (" + std::to_string(n) + " available)");
+    return static_cast<std::size_t>(std::stoull(v.text));
+  }
+
+  Scene read(const Json_value& doc, const Load_options& options) const;
+
+private:
+  void read_object(const Json_value& v, const std::string& at, Scene& s) const;
+  Motion read_motion(const Json_value& v, const std::string& at, std::size_t vertex_count) const;
+  void read_priority(const Json_value& v, const std::string& at, Scene& s) const;
+  void check_geometry(const Scene& s, const Load_options& options) const;
+
+  std::string source_;
+};
+
+Motion Reader::read_motion(const Json_value& v, const std::string& at, std::size_t vertex_count) const {
+  Motion m;
+  if (v.kind == Kind::null) return m;
+  expect_object(v, at, {"translation", "matrix", "vertices"}, {});
+  if (v.members.size() != 1) fail(at, "expected exactly one of \"translation\", \"matrix\", \"vertices\"");
+  const auto& [key, value] = v.members.front();
+  const std::string here = at + "/" + key;
+  if (key == "translation") {
+    m.kind = Motion::Kind::translation;
+    const auto& items = array(value, here, 3);
+    for (std::size_t i = 0; i < 3; ++i) m.translation[i] = poly(items[i], here + "/" + std::to_string(i));
+  } else if (key == "matrix") {
+    m.kind = Motion::Kind::matrix;
+    const auto& rows = array(value, here, 4);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::string row_at = here + "/" + std::to_string(i);
+      const auto& row = array(rows[i], row_at, 4);
+      for (std::size_t j = 0; j < 4; ++j) m.matrix[i][j] = poly(row[j], row_at + "/" + std::to_string(j));
+    }
+  } else {
+    m.kind = Motion::Kind::vertices;
+    const auto& items = array(value, here, vertex_count);
+    for (std::size_t i = 0; i < items.size(); ++i) m.vertices.push_back(point4(items[i], here + "/" + std::to_string(i)));
+  }
+  return m;
+}
+
+void Reader::read_object(const Json_value& v, const std::string& at, Scene& s) const {
+  expect_object(v, at, {"name", "vertices", "triangles", "motion"}, {"vertices", "triangles"});
+  Object o;
+  if (const auto* n = v.find("name")) {
+    expect(*n, Kind::string, at + "/name");
+    o.name = n->text;
+  }
+  o.first_vertex = s.rest.size();
+  const auto& verts = array(*v.find("vertices"), at + "/vertices");
+  for (std::size_t i = 0; i < verts.size(); ++i) {
+    const std::string here = at + "/vertices/" + std::to_string(i);
+    const auto& c = array(verts[i], here);
+    if (c.size() != 3 && c.size() != 4) fail(here, "expected [x, y, z] or a point4 [X, Y, Z, W] of numbers");
+    QPoint p{{Q(0), Q(0), Q(0), Q(1)}};
+    for (std::size_t k = 0; k < c.size(); ++k) p[static_cast<int>(k)] = number(c[k], here + "/" + std::to_string(k));
+    if (p[3] == 0) fail(here, "a vertex must be a Euclidean point (W = 0 is a direction)");
+    s.rest.push_back(p);
+  }
+  o.vertex_count = verts.size();
+  o.first_triangle = s.triangles.size();
+  const auto& tris = array(*v.find("triangles"), at + "/triangles");
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const std::string here = at + "/triangles/" + std::to_string(t);
+    const auto& idx = array(tris[t], here, 3);
+    std::array<std::size_t, 3> g;
+    for (std::size_t k = 0; k < 3; ++k) g[k] = o.first_vertex + index(idx[k], here + "/" + std::to_string(k), verts.size(), "a vertex");
+    if (g[0] == g[1] || g[1] == g[2] || g[0] == g[2]) fail(here, "a triangle with a repeated vertex");
+    s.triangles.push_back(g);
+  }
+  o.triangle_count = tris.size();
+  if (const auto* m = v.find("motion")) o.motion = read_motion(*m, at + "/motion", o.vertex_count);
+  s.objects.push_back(std::move(o));
+}
+
+void Reader::read_priority(const Json_value& v, const std::string& at, Scene& s) const {
+  expect_object(v, at, {"seed", "order"}, {});
+  if (v.members.size() != 1) fail(at, "expected exactly one of \"seed\" and \"order\"");
+  if (const auto* seed = v.find("seed")) {
+    s.priority_spec.seed = unsigned_integer(*seed, at + "/seed");
+    return;
+  }
+  const auto& items = array(*v.find("order"), at + "/order");
+  std::vector<std::size_t> order;
+  std::vector<bool> seen(s.triangles.size(), false);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string here = at + "/order/" + std::to_string(i);
+    const auto& pair = array(items[i], here, 2);
+    const std::size_t o = index(pair[0], here + "/0", s.objects.size(), "an object");
+    const std::size_t t = s.objects[o].first_triangle +
+                          index(pair[1], here + "/1", s.objects[o].triangle_count, "a triangle");
+    if (seen[t]) fail(here, "triangle listed twice");
+    seen[t] = true;
+    order.push_back(t);
+  }
+  if (order.size() != s.triangles.size())
+    fail(at + "/order", "lists " + std::to_string(order.size()) + " of the " + std::to_string(s.triangles.size()) +
+                            " triangles (every triangle exactly once)");
+  s.priority_spec.order = std::move(order);
+}
+
+// The place of triangle t in the file.
+std::string triangle_place(const Scene& s, std::size_t t) {
+  const std::size_t o = s.triangle_object[t];
+  return "/objects/" + std::to_string(o) + "/triangles/" + std::to_string(t - s.objects[o].first_triangle);
+}
+
+Vec3 euclidean(const QPoint& p) { return {p[0] / p[3], p[1] / p[3], p[2] / p[3]}; }
+
+void Reader::check_geometry(const Scene& s, const Load_options& options) const {
+  std::vector<Vec3> at_start(s.rest.size());
+  for (std::size_t v = 0; v < s.rest.size(); ++v) {
+    const QPoint p = s.position_at(v, s.start);
+    if (p[3] == 0) {
+      const std::size_t o = s.vertex_object[v];
+      fail("/objects/" + std::to_string(o) + "/vertices/" + std::to_string(v - s.objects[o].first_vertex),
+           "this vertex's W is zero at the start time (it must stay a Euclidean point)");
+    }
+    at_start[v] = euclidean(p);
+  }
+  std::vector<Triangle3> tri(s.triangles.size());
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    for (std::size_t k = 0; k < 3; ++k) tri[t][k] = at_start[s.triangles[t][k]];
+    const Vec3 u{tri[t][1][0] - tri[t][0][0], tri[t][1][1] - tri[t][0][1], tri[t][1][2] - tri[t][0][2]};
+    const Vec3 w{tri[t][2][0] - tri[t][0][0], tri[t][2][1] - tri[t][0][1], tri[t][2][2] - tri[t][0][2]};
+    if (u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 && u[0] * w[1] - u[1] * w[0] == 0)
+      fail(triangle_place(s, t), "the triangle's vertices are collinear at the start time");
+  }
+  if (options.allow_intersecting) return;
+  for (std::size_t a = 0; a < tri.size(); ++a)
+    for (std::size_t b = a + 1; b < tri.size(); ++b) {
+      std::vector<Vec3> shared;
+      if (s.triangle_object[a] == s.triangle_object[b])
+        for (std::size_t va : s.triangles[a])
+          for (std::size_t vb : s.triangles[b])
+            if (va == vb) shared.push_back(at_start[va]);
+      if (triangles_conflict(tri[a], tri[b], shared))
+        fail(triangle_place(s, a), "intersects the triangle at " + triangle_place(s, b) +
+                                       " at the start time (pass --allow-intersecting to accept this)");
+    }
+}
+
+Scene Reader::read(const Json_value& doc, const Load_options& options) const {
+  expect_object(doc, "", {"format", "name", "time", "decomposition", "priority", "objects"}, {"format", "objects"});
+  Scene s;
+  const Json_value& format = *doc.find("format");
+  if (format.kind != Kind::string || format.text != "kvd-scene/1")
+    fail("/format", "unknown format (expected the string \"kvd-scene/1\")");
+  if (const auto* n = doc.find("name")) {
+    expect(*n, Kind::string, "/name");
+    s.name = n->text;
+  }
+  if (const auto* t = doc.find("time")) {
+    expect_object(*t, "/time", {"start", "end"}, {});
+    if (const auto* st = t->find("start")) s.start = number(*st, "/time/start");
+    if (const auto* en = t->find("end")) s.end = number(*en, "/time/end");
+    if (s.end && !(s.start < *s.end)) fail("/time", "time.start must be less than time.end");
+  }
+  s.x = {{QPoly(1), QPoly(), QPoly(), QPoly()}};
+  s.z = {{QPoly(), QPoly(), QPoly(1), QPoly()}};
+  if (const auto* d = doc.find("decomposition")) {
+    expect_object(*d, "/decomposition", {"x", "z"}, {});
+    if (const auto* x = d->find("x")) s.x = point4(*x, "/decomposition/x");
+    if (const auto* z = d->find("z")) s.z = point4(*z, "/decomposition/z");
+    bool proportional = true;  // all 2x2 minors identically zero
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) proportional = proportional && (s.x[i] * s.z[j] - s.x[j] * s.z[i]).is_zero();
+    if (proportional) fail("/decomposition", "x and z are the same projective point");
+  }
+  const auto& objects = array(*doc.find("objects"), "/objects");
+  if (objects.empty()) fail("/objects", "a scene needs at least one object");
+  std::set<std::string> names;
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    const std::string at = "/objects/" + std::to_string(o);
+    read_object(objects[o], at, s);
+    const std::string& n = s.objects.back().name;
+    if (!n.empty() && !names.insert(n).second) fail(at + "/name", "object name \"" + n + "\" is used twice");
+  }
+  if (const auto* p = doc.find("priority")) read_priority(*p, "/priority", s);
+  if (options.seed) s.priority_spec = Priority_spec{*options.seed, std::nullopt};
+  s.derive();
+  check_geometry(s, options);
+  return s;
+}
+
+}  // namespace
+
+Scene read_scene(const std::string& text, const std::string& source, const Load_options& options) {
+  Json_value doc;
+  std::string error;
+  if (!parse_json(text, doc, error)) throw Scene_error(source + ": " + error);
+  return Reader(source).read(doc, options);
+}
+
+Scene load_scene(const std::string& path, const Load_options& options) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Scene_error(path + ": cannot open the file");
+  in.seekg(0, std::ios::end);
+  const auto size = in.tellg();
+  if (size < 0) throw Scene_error(path + ": cannot read the file");
+  if (static_cast<std::size_t>(size) > max_file_bytes)
+    throw Scene_error(path + ": larger than " + std::to_string(max_file_bytes >> 20) + " MiB; refused");
+  in.seekg(0);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_scene(text.str(), path, options);
+}
+
+}  // namespace kvd::scene

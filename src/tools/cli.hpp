@@ -1,0 +1,40 @@
+// Shared pieces of the kvd commands: argument walking and the exit-status
+// contract (0 success, 1 failed check, 2 bad input or usage).
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace kvd::cli {
+
+// Bad usage: the message goes to stderr and kvd exits with status 2.
+class Usage_error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// The arguments after the command name, consumed in order.
+class Args {
+public:
+  Args(std::string command, std::vector<std::string> args) : command_(std::move(command)), args_(std::move(args)) {}
+  bool done() const { return i_ >= args_.size(); }
+  const std::string& next() { return args_.at(i_++); }
+  // The value following option `flag`.
+  const std::string& value(const std::string& flag);
+  std::uint64_t unsigned_value(const std::string& flag);
+  [[noreturn]] void unknown(const std::string& arg) const;
+
+private:
+  std::string command_;
+  std::vector<std::string> args_;
+  std::size_t i_ = 0;
+};
+
+// JSON string literal for s (quotes and escapes).
+std::string json_string(const std::string& s);
+
+int info(Args& args);
+
+}  // namespace kvd::cli
