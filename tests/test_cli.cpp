@@ -47,3 +47,25 @@ TEST_CASE("kvd rejects misuse with exit status 2", "[cli]") {
   CHECK(run("no-such-command").status == 2);
   CHECK(run("--no-such-flag").status == 2);
 }
+
+TEST_CASE("kvd info prints exact counts of a bundled scene", "[cli][info]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/boxes.json";
+  const Run r = run("info " + scene + " --json");
+  CHECK(r.status == 0);
+  // Two boxes: 8 vertices, 12 triangles, 12 + 6 edges each; one box moves linearly.
+  CHECK(r.out.find("\"objects\": 2, \"vertices\": 16, \"edges\": 36, \"triangles\": 24, "
+                   "\"moving_triangles\": 12, \"max_motion_degree\": 1}") != std::string::npos);
+  const Run text = run("info " + scene);
+  CHECK(text.status == 0);
+  CHECK(text.out.find("triangles:         24\n") != std::string::npos);
+  CHECK(run("info --help").out.find("usage: kvd info") != std::string::npos);
+}
+
+TEST_CASE("kvd info exits with status 2 on bad scenes and bad usage", "[cli][info]") {
+  CHECK(run("info").status == 2);
+  CHECK(run("info /no/such/file.json").status == 2);
+  CHECK(run(std::string("info ") + KVD_SOURCE_DIR).status == 2);  // a directory
+  CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/data/boxes.json --seed -3").status == 2);
+  CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/data/boxes.json --frobnicate").status == 2);
+  CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/README.md").status == 2);  // not JSON
+}

@@ -2,6 +2,7 @@
 // polynomials, ordering of very close numbers, conversions.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "kernels.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
@@ -77,6 +78,23 @@ TEST_CASE("exact instants convert to double and to text", "[exact]") {
   CHECK(a[0].to_double() == -std::sqrt(2.0));
   CHECK(kvd::Exact_time(kvd::test::q(-7, 3)).to_string() == "-7/3");
   CHECK(a[1].to_string().rfind("root of [-2, 0, 1] in (", 0) == 0);
+}
+
+TEST_CASE("to_double rounds to nearest, ties to even", "[exact]") {
+  // IEEE square roots are correctly rounded; isolate from an arbitrary
+  // rational so that interval ends are not on a power-of-two grid.
+  int wrong = 0;
+  for (long n = 2; n < 3000; ++n) {
+    const auto r = k.next_root(P{mpq_class(-n), 0, 1}, kvd::Exact_time(kvd::test::q(1, 3)));
+    wrong += r->to_double() != std::sqrt(static_cast<double>(n));
+  }
+  CHECK(wrong == 0);
+  // Subnormals: 2^-1075 + 2^-1135 is just above half the smallest subnormal.
+  mpq_class tiny = mpq_class(1) / (mpz_class(1) << 1075) + mpq_class(1) / (mpz_class(1) << 1135);
+  CHECK(kvd::Exact_time(tiny).to_double() == std::numeric_limits<double>::denorm_min());
+  // An exact tie, 1 + 2^-53, goes to the even neighbour 1.
+  CHECK(kvd::Exact_time(mpq_class(1) + mpq_class(1) / (mpz_class(1) << 53)).to_double() == 1.0);
+  CHECK(kvd::Exact_time(mpq_class(-1, 3)).to_double() == -1.0 / 3.0);
 }
 
 TEST_CASE("signs at algebraic instants are exact", "[exact]") {

@@ -76,7 +76,7 @@ std::optional<Exact_time> Exact_kernel::next_root(const Poly& p, const Time& aft
   const zpoly::ZPoly q = zpoly::odd_part(zpoly::to_zpoly(p));
   if (zpoly::degree(q) < 1) return std::nullopt;
   const mpq_class bound = zpoly::root_bound(q);
-  const mpq_class& lo = after.lower();  // == after when rational
+  const mpq_class lo = after.lower();  // a copy: comparing with `after` may refine it
   if (!(lo < bound)) return std::nullopt;
   std::optional<Exact_time> found;
   isolate_real_roots(q, lo, bound, [&](const Exact_time& r) {

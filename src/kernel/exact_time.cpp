@@ -1,9 +1,9 @@
 #include "kvd/kernel/exact_time.hpp"
 
 #include <cassert>
-#include <mpfr.h>
-
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 
 namespace kvd {
@@ -16,7 +16,9 @@ void Exact_time::Rep::become_rational(const mpq_class& r) {
 }
 
 Exact_time::Exact_time(const mpq_class& r) : rep_(std::make_shared<Rep>()) {
-  rep_->become_rational(r);
+  mpq_class c = r;
+  c.canonicalize();  // a non-canonical mpq would corrupt GMP's arithmetic
+  rep_->become_rational(c);
 }
 
 Exact_time Exact_time::algebraic(zpoly::ZPoly p, const mpq_class& lo, const mpq_class& hi) {
@@ -65,28 +67,54 @@ Exact_time Exact_time::detached() const {
   return t;
 }
 
+namespace {
+
+// The exact value of a finite double, or +-2^1024 for the infinities (the
+// point past which round-to-nearest overflows).
+mpq_class exact(double d) {
+  if (std::isinf(d)) return mpq_class(mpz_class(d > 0 ? 1 : -1) << 1024);
+  return mpq_class(d);
+}
+
+bool even(double d) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &d, sizeof bits);
+  return (bits & 1) == 0;
+}
+
+}  // namespace
+
 double Exact_time::to_double() const {
-  // Refine until the interval is far below double resolution (relative 2^-60);
-  // the cap only matters for values below double range.
+  // First a close approximation: an interval of relative width 2^-60 (an
+  // interval straddling zero is first split there).
+  if (!rep_->rational && rep_->lo < 0 && rep_->hi > 0) compare_refining(0);
   for (int i = 0; i < 4000 && !rep_->rational; ++i) {
     const Rep& x = *rep_;
-    if (sgn(x.lo) == sgn(x.hi) && sgn(x.lo) != 0) {
-      mpq_class w = x.hi - x.lo;
-      mpq_class m = abs(x.lo) < abs(x.hi) ? mpq_class(abs(x.lo)) : mpq_class(abs(x.hi));
-      mpz_class scale = 1;
-      scale <<= 60;
-      if (w * scale <= m) break;
-    }
+    mpq_class w = x.hi - x.lo;
+    const mpq_class m = abs(x.lo) < abs(x.hi) ? mpq_class(abs(x.lo)) : mpq_class(abs(x.hi));
+    w <<= 60;
+    if (w <= m) break;
     refine();
   }
-  // Round to nearest (mpq_class::get_d truncates).
-  const mpq_class v = rep_->rational ? rep_->lo : mpq_class((rep_->lo + rep_->hi) / 2);
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, v.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
+  double d = (rep_->rational ? rep_->lo : mpq_class((rep_->lo + rep_->hi) / 2)).get_d();
+  // Then round to nearest, ties to even, by exact comparison with the
+  // halfway points around d (a step or two at most).
+  for (;;) {
+    const double up = std::nextafter(d, HUGE_VAL), down = std::nextafter(d, -HUGE_VAL);
+    const int above = compare_refining((exact(d) + exact(up)) / 2);
+    if (above > 0 || (above == 0 && !even(d))) {
+      d = up;
+      if (std::isinf(d)) return d;
+      continue;
+    }
+    const int below = compare_refining((exact(down) + exact(d)) / 2);
+    if (below < 0 || (below == 0 && !even(d))) {
+      d = down;
+      if (std::isinf(d)) return d;
+      continue;
+    }
+    return d;
+  }
 }
 
 std::string Exact_time::to_string() const {

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace kvd::scene {
 
 const Json_value* Json_value::find(const std::string& key) const {
@@ -26,6 +28,86 @@ namespace {
 
 using nlohmann::json;
 
+// nlohmann converts JSON numbers to double and rejects those that overflow
+// (1e400, or a 400-digit integer), but the scene format reads every number
+// exactly from its text. So, before parsing, each number token that is not a
+// small integer is rewritten as the string "\u0000TOKEN": the builder turns
+// such strings back into numbers with their original text. (A string in the
+// file that starts with U+0000 is thus read as a number, and then rejected
+// wherever a string is expected.)
+constexpr char number_mark = '\0';
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// The length of the JSON number token at text[i], 0 if there is none that
+// ends at a delimiter.
+std::size_t number_token(const std::string& t, std::size_t i) {
+  std::size_t j = i;
+  if (j < t.size() && t[j] == '-') ++j;
+  if (j >= t.size() || !is_digit(t[j])) return 0;
+  if (t[j] == '0') ++j;
+  else while (j < t.size() && is_digit(t[j])) ++j;
+  if (j < t.size() && t[j] == '.') {
+    if (++j >= t.size() || !is_digit(t[j])) return 0;
+    while (j < t.size() && is_digit(t[j])) ++j;
+  }
+  if (j < t.size() && (t[j] == 'e' || t[j] == 'E')) {
+    ++j;
+    if (j < t.size() && (t[j] == '+' || t[j] == '-')) ++j;
+    if (j >= t.size() || !is_digit(t[j])) return 0;
+    while (j < t.size() && is_digit(t[j])) ++j;
+  }
+  if (j < t.size() && std::string(" \t\r\n,]}").find(t[j]) == std::string::npos) return 0;
+  return j - i;
+}
+
+// Offsets in the rewritten text map back to the file through `shifts`:
+// (offset in the rewritten text, bytes inserted up to there).
+std::string protect_numbers(const std::string& t, std::vector<std::pair<std::size_t, std::size_t>>& shifts) {
+  std::string out;
+  out.reserve(t.size());
+  bool in_string = false;
+  std::size_t inserted = 0;
+  for (std::size_t i = 0; i < t.size();) {
+    const char c = t[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\' && i + 1 < t.size()) out += t[++i];
+      else if (c == '"') in_string = false;
+      ++i;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    const bool starts_token = (c == '-' || is_digit(c)) && (i == 0 || !is_digit(t[i - 1]));
+    const std::size_t n = starts_token ? number_token(t, i) : 0;
+    const bool small_integer = n > 0 && n <= 18 && t.find_first_of(".eE", i) >= i + n;
+    if (n > 0 && !small_integer) {
+      out += "\"\\u0000";
+      out.append(t, i, n);
+      out += '"';
+      inserted += 8;
+      shifts.emplace_back(out.size(), inserted);
+      i += n;
+      continue;
+    }
+    if (n > 0) {
+      out.append(t, i, n);
+      i += n;
+      continue;
+    }
+    out += c;
+    ++i;
+  }
+  return out;
+}
+
+std::size_t original_offset(std::size_t pos, const std::vector<std::pair<std::size_t, std::size_t>>& shifts) {
+  std::size_t inserted = 0;
+  for (const auto& [at, total] : shifts)
+    if (at <= pos) inserted = total;
+  return pos >= inserted ? pos - inserted : 0;
+}
+
 // Builds the tree on an explicit stack; every callback returning false stops
 // the parser at once.
 class Builder : public nlohmann::json_sax<json> {
@@ -44,6 +126,7 @@ public:
   bool number_unsigned(number_unsigned_t v) override { return number(std::to_string(v)); }
   bool number_float(number_float_t, const string_t& raw) override { return number(raw); }
   bool string(string_t& v) override {
+    if (!v.empty() && v[0] == number_mark) return number(v.substr(1));
     Json_value x;
     x.kind = Json_value::Kind::string;
     x.text = std::move(v);
@@ -61,9 +144,13 @@ public:
   bool start_array(std::size_t) override { return open(Json_value::Kind::array); }
   bool end_array() override { return close(); }
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) override {
-    if (error.empty()) error = "malformed JSON at byte " + std::to_string(position) + ": " + ex.what();
+    if (error.empty()) {
+      error_position = position;
+      error = ex.what();
+    }
     return false;
   }
+  std::size_t error_position = 0;
 
 private:
   bool fail(std::string why) {
@@ -111,10 +198,27 @@ private:
 
 bool parse_json(const std::string& text, Json_value& out, std::string& error) {
   out = Json_value{};
+  std::vector<std::pair<std::size_t, std::size_t>> shifts;
+  const std::string protected_text = protect_numbers(text, shifts);
   Builder b(out);
-  const bool ok = json::sax_parse(text, &b, json::input_format_t::json, true);
-  if (!ok) error = b.error.empty() ? "malformed JSON" : b.error;
-  return ok;
+  const bool ok = json::sax_parse(protected_text, &b, json::input_format_t::json, true);
+  if (ok) return true;
+  if (b.error.empty()) error = "malformed JSON";
+  else if (b.error_position == 0 && b.error.rfind("[json.exception", 0) != 0) error = b.error;
+  else {
+    // nlohmann's message carries a line and column of the rewritten text:
+    // keep only its description, and place it in the file as written.
+    std::string detail = b.error;
+    const std::size_t col = detail.find(", column ");
+    if (col != std::string::npos && detail.find(": ", col) != std::string::npos) detail = detail.substr(detail.find(": ", col) + 2);
+    const std::size_t at = std::min(original_offset(b.error_position, shifts), text.size());
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    const std::size_t line_start = text.rfind('\n', at == 0 ? 0 : at - 1);
+    const std::size_t column = line_start == std::string::npos || at == 0 ? at + 1 : at - line_start;  // 1-based
+    error = "malformed JSON at byte " + std::to_string(at) + " (line " + std::to_string(line) + ", column " +
+            std::to_string(column) + "): " + detail;
+  }
+  return false;
 }
 
 }  // namespace kvd::scene

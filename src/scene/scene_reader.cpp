@@ -1,5 +1,6 @@
 // The scene reader: JSON tree to Scene, with every rejection of the format
 // page reported at its JSON place.
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <set>
@@ -285,16 +286,19 @@ Scene read_scene(const std::string& text, const std::string& source, const Load_
 }
 
 Scene load_scene(const std::string& path, const Load_options& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Scene_error(path + ": cannot open the file");
-  in.seekg(0, std::ios::end);
-  const auto size = in.tellg();
-  if (size < 0) throw Scene_error(path + ": cannot read the file");
-  if (static_cast<std::size_t>(size) > max_file_bytes)
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw Scene_error(path + ": no such file");
+  if (!std::filesystem::is_regular_file(status)) throw Scene_error(path + ": not a regular file");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw Scene_error(path + ": cannot read the file (" + ec.message() + ")");
+  if (size > max_file_bytes)
     throw Scene_error(path + ": larger than " + std::to_string(max_file_bytes >> 20) + " MiB; refused");
-  in.seekg(0);
+  std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
-  text << in.rdbuf();
+  if (!in || !(text << in.rdbuf())) {
+    if (size != 0) throw Scene_error(path + ": cannot read the file");
+  }
   return read_scene(text.str(), path, options);
 }
 
