@@ -65,6 +65,7 @@ TEST_CASE("kvd info exits with status 2 on bad scenes and bad usage", "[cli][inf
   CHECK(run("info").status == 2);
   CHECK(run("info /no/such/file.json").status == 2);
   CHECK(run(std::string("info ") + KVD_SOURCE_DIR).status == 2);  // a directory
+  CHECK(run("info - < /dev/null").status == 2);                      // empty input
   CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/data/boxes.json --seed -3").status == 2);
   CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/data/boxes.json --frobnicate").status == 2);
   CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/README.md").status == 2);  // not JSON

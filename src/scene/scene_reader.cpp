@@ -2,6 +2,7 @@
 // page reported at its JSON place.
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <initializer_list>
 #include <set>
 #include <sstream>
@@ -286,20 +287,29 @@ Scene read_scene(const std::string& text, const std::string& source, const Load_
 }
 
 Scene load_scene(const std::string& path, const Load_options& options) {
+  const std::string name = path == "-" ? "(stdin)" : path;
   std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw Scene_error(path + ": no such file");
-  if (!std::filesystem::is_regular_file(status)) throw Scene_error(path + ": not a regular file");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw Scene_error(path + ": cannot read the file (" + ec.message() + ")");
-  if (size > max_file_bytes)
-    throw Scene_error(path + ": larger than " + std::to_string(max_file_bytes >> 20) + " MiB; refused");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (!in || !(text << in.rdbuf())) {
-    if (size != 0) throw Scene_error(path + ": cannot read the file");
+  if (path != "-") {
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw Scene_error(name + ": no such file");
+    if (std::filesystem::is_directory(status)) throw Scene_error(name + ": is a directory");
   }
-  return read_scene(text.str(), path, options);
+  std::ifstream file;
+  if (path != "-") {
+    file.open(path, std::ios::binary);
+    if (!file) throw Scene_error(name + ": cannot open the file");
+  }
+  std::istream& in = path == "-" ? std::cin : file;
+  // Read in blocks and stop past the cap: the source may be a pipe of any size.
+  std::string text;
+  char block[1 << 16];
+  while (in.read(block, sizeof block) || in.gcount() > 0) {
+    text.append(block, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_file_bytes)
+      throw Scene_error(name + ": larger than " + std::to_string(max_file_bytes >> 20) + " MiB; refused");
+  }
+  if (in.bad()) throw Scene_error(name + ": cannot read the file");
+  return read_scene(text, name, options);
 }
 
 }  // namespace kvd::scene

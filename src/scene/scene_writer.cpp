@@ -41,6 +41,27 @@ J motion(const Motion& m) {
   return nullptr;
 }
 
+// Pretty printing that keeps short values (a point, a vertex list of a small
+// triangle) on one line: the compact form when it fits in 100 columns.
+void print(const J& v, int indent, std::string& out) {
+  const std::string compact = v.dump();
+  if (compact.size() + static_cast<std::size_t>(indent) <= 100 || !v.is_structured() || v.empty()) {
+    out += compact;
+    return;
+  }
+  const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
+  out += v.is_object() ? "{\n" : "[\n";
+  bool first = true;
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    if (!first) out += ",\n";
+    first = false;
+    out += pad;
+    if (v.is_object()) out += J(it.key()).dump() + ": ";
+    print(*it, indent + 2, out);
+  }
+  out += "\n" + std::string(static_cast<std::size_t>(indent), ' ') + (v.is_object() ? "}" : "]");
+}
+
 }  // namespace
 
 std::string write_scene(const Scene& s) {
@@ -81,7 +102,9 @@ std::string write_scene(const Scene& s) {
     objects.push_back(obj);
   }
   doc["objects"] = objects;
-  return doc.dump(2) + "\n";
+  std::string out;
+  print(doc, 0, out);
+  return out + "\n";
 }
 
 }  // namespace kvd::scene

@@ -36,5 +36,6 @@ private:
 std::string json_string(const std::string& s);
 
 int info(Args& args);
+int generate(Args& args);
 
 }  // namespace kvd::cli

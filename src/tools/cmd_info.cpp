@@ -11,6 +11,7 @@ namespace {
 const char* const info_help =
     "usage: kvd info SCENE [--json] [--seed N] [--allow-intersecting]\n"
     "\n"
+    "SCENE is a file, or - for standard input.\n"
     "Loads and validates a kvd-scene/1 file and prints its counts: objects,\n"
     "vertices, edges, triangles, moving triangles, maximum motion degree.\n"
     "\n"
@@ -34,7 +35,7 @@ int info(Args& args) {
     if (a == "--json") json = true;
     else if (a == "--seed") options.seed = args.unsigned_value(a);
     else if (a == "--allow-intersecting") options.allow_intersecting = true;
-    else if (!a.empty() && a[0] != '-' && !path) path = a;
+    else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
     else args.unknown(a);
   }
   if (!path) throw Usage_error("kvd info: missing the SCENE file (see kvd info --help)");

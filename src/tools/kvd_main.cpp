@@ -17,6 +17,7 @@ const char* const usage =
     "\n"
     "commands:\n"
     "  info SCENE     validate a scene file and print its counts\n"
+    "  generate FAM   write a generated scene (the thesis's data sets and more)\n"
     "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   kvd::cli::Args args(command, std::vector<std::string>(argv + 2, argv + argc));
   try {
     if (command == "info") return kvd::cli::info(args);
+    if (command == "generate") return kvd::cli::generate(args);
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {
