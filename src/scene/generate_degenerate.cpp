@@ -1,25 +1,11 @@
 // Generators of degenerate scenes: axis-aligned boxes, and a rotor.
+#include "generator_support.hpp"
 #include "kvd/scene/generators.hpp"
 #include "kvd/scene/priority.hpp"
 
 namespace kvd::scene {
 
 namespace {
-
-long uniform(Split_mix64& g, long lo, long hi) {
-  return lo + static_cast<long>(g.next() % static_cast<std::uint64_t>(hi - lo + 1));
-}
-
-Scene empty_scene(const std::string& name, std::uint64_t seed) {
-  Scene s;
-  s.name = name;
-  s.start = 0;
-  s.end = Q(10);
-  s.x = {{QPoly(1), QPoly(), QPoly(), QPoly()}};
-  s.z = {{QPoly(), QPoly(), QPoly(1), QPoly()}};
-  s.priority_spec.seed = seed;
-  return s;
-}
 
 // Adds an object made of the given vertices and triangles (local indices).
 Object& add_object(Scene& s, const std::vector<QPoint>& vertices, const std::vector<std::array<std::size_t, 3>>& tris) {
@@ -51,21 +37,20 @@ Scene boxes(std::size_t count, const Q& moving, std::uint64_t seed) {
   while (side * side < count) ++side;
   for (std::size_t b = 0; b < count; ++b) {
     const long x0 = 4 * static_cast<long>(b % side), y0 = 4 * static_cast<long>(b / side);
-    const long w = uniform(g, 1, 3), d = uniform(g, 1, 3), h = uniform(g, 1, 3);
+    const long w = g.between(1, 3), d = g.between(1, 3), h = g.between(1, 3);
     std::vector<QPoint> v;
     for (long i = 0; i < 8; ++i) v.push_back({{Q(x0 + (i & 1) * w), Q(y0 + ((i >> 1) & 1) * d), Q(((i >> 2) & 1) * h), Q(1)}});
     add_object(s, v, box_triangles);
   }
   // Moving boxes rise or sink at speeds in {1/2, 1}: their faces stay parallel
   // to (and some coplanar with) the others' while they move.
-  const std::size_t moving_count = static_cast<std::size_t>(mpz_class(moving * static_cast<long>(count) + Q(1, 2)).get_ui());
   const std::vector<std::size_t> order = shuffled_ids(count, g.next());
-  for (std::size_t k = 0; k < moving_count; ++k) {
+  for (std::size_t k = 0; k < moving_count(moving, count); ++k) {
     Motion m;
     m.kind = Motion::Kind::translation;
-    Q speed(uniform(g, 1, 2), 2);
+    Q speed(g.between(1, 2), 2);
     speed.canonicalize();
-    if (uniform(g, 0, 1)) speed = -speed;
+    if (g.between(0, 1)) speed = -speed;
     m.translation = {QPoly(), QPoly(), QPoly{Q(0), speed}};
     s.objects[order[k]].motion = m;
   }
@@ -89,7 +74,7 @@ Scene rotor(std::size_t blades, std::uint64_t seed) {
   // radius and angle offset (integers), so they turn in parallel planes and
   // never meet; their vertices cross each other's P- and E-planes.
   for (std::size_t b = 0; b < blades; ++b) {
-    const long r = uniform(g, 2, 9), a = uniform(g, -9, 9), c = uniform(g, -9, 9);
+    const long r = g.between(2, 9), a = g.between(-9, 9), c = g.between(-9, 9);
     const Q z(2 * static_cast<long>(b));
     // A right isosceles blade with legs r, its corner at (a, c).
     std::vector<QPoint> v{{{Q(a), Q(c), z, Q(1)}}, {{Q(a + r), Q(c), z, Q(1)}}, {{Q(a), Q(c + r), z, Q(1)}}};

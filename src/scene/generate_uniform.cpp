@@ -1,4 +1,5 @@
 // The thesis's uniform-scale and uniform-density data sets.
+#include "generator_support.hpp"
 #include "kvd/scene/generators.hpp"
 #include "kvd/scene/priority.hpp"
 #include "kvd/scene/triangle_intersection.hpp"
@@ -11,11 +12,6 @@ constexpr long box_side = 100;
 // The base triangle (a scalene one, about 7 units across), before scaling.
 const long base_triangle[3][2] = {{-3, -2}, {4, -1}, {0, 3}};
 constexpr int max_attempts = 20000;
-
-// A uniformly random integer in [lo, hi] (the modulo is part of the definition).
-long uniform(Split_mix64& g, long lo, long hi) {
-  return lo + static_cast<long>(g.next() % static_cast<std::uint64_t>(hi - lo + 1));
-}
 
 using Matrix3 = std::array<std::array<Q, 3>, 3>;
 
@@ -51,14 +47,10 @@ Scene uniform(const Uniform_params& p, const Q& scale) {
   if (p.moving < 0 || p.moving > 1) throw Generator_error("--moving must be a fraction in [0, 1]");
   if (p.degree < 1) throw Generator_error("--degree must be at least 1");
   Split_mix64 g(p.seed);
-  Scene s;
-  s.name = "uniform N=" + std::to_string(p.triangles) + " scale=" + scale.get_str() + " moving=" + p.moving.get_str() +
-           " degree=" + std::to_string(p.degree) + " seed=" + std::to_string(p.seed);
-  s.start = 0;
-  s.end = Q(10);
-  s.x = {{QPoly(1), QPoly(), QPoly(), QPoly()}};
-  s.z = {{QPoly(), QPoly(), QPoly(1), QPoly()}};
-  s.priority_spec.seed = p.seed;
+  Scene s = empty_scene("uniform N=" + std::to_string(p.triangles) + " scale=" + scale.get_str() +
+                            " moving=" + p.moving.get_str() + " degree=" + std::to_string(p.degree) +
+                            " seed=" + std::to_string(p.seed),
+                        p.seed);
   std::vector<Triangle3> placed;
   for (std::size_t i = 0; i < p.triangles; ++i) {
     Triangle3 t;
@@ -72,12 +64,12 @@ Scene uniform(const Uniform_params& p, const Q& scale) {
       long q[4];
       Matrix3 r;
       do {
-        for (long& c : q) c = uniform(g, -20, 20);
+        for (long& c : q) c = g.between(-20, 20);
         if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) continue;
         r = rotation(q[0], q[1], q[2], q[3]);
       } while (!general_position(place(Q(1), r, Vec3{})));
       Vec3 centre;
-      for (auto& c : centre) c = Q(uniform(g, 0, 100 * box_side), 100);
+      for (auto& c : centre) c = Q(g.between(0, 100 * box_side), 100);
       for (auto& c : centre) c.canonicalize();
       t = place(scale, r, centre);
       bool clear = true;
@@ -97,10 +89,8 @@ Scene uniform(const Uniform_params& p, const Q& scale) {
   // The moving triangles: a seeded choice of round(moving * N) of them, each
   // translating by a random polynomial of the given degree (coefficients in
   // [-1, 1] with step 1/100, divided by k! for t^k so that speeds stay tame).
-  const std::size_t moving_count =
-      static_cast<std::size_t>(mpz_class(p.moving * static_cast<long>(p.triangles) + Q(1, 2)).get_ui());
   const std::vector<std::size_t> order = shuffled_ids(p.triangles, g.next());
-  for (std::size_t k = 0; k < moving_count; ++k) {
+  for (std::size_t k = 0; k < moving_count(p.moving, p.triangles); ++k) {
     Motion m;
     m.kind = Motion::Kind::translation;
     for (auto& axis : m.translation) {
@@ -108,7 +98,7 @@ Scene uniform(const Uniform_params& p, const Q& scale) {
       long factorial = 1;
       for (int d = 1; d <= p.degree; ++d) {
         factorial *= d;
-        Q coefficient(uniform(g, -100, 100), 100 * factorial);
+        Q coefficient(g.between(-100, 100), 100 * factorial);
         coefficient.canonicalize();
         c.push_back(coefficient);
       }

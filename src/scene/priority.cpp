@@ -12,6 +12,10 @@ std::uint64_t Split_mix64::next() {
   return z ^ (z >> 31);
 }
 
+long Split_mix64::between(long lo, long hi) {
+  return lo + static_cast<long>(next() % static_cast<std::uint64_t>(hi - lo + 1));
+}
+
 std::vector<std::size_t> shuffled_ids(std::size_t n, std::uint64_t seed) {
   std::vector<std::size_t> a(n);
   std::iota(a.begin(), a.end(), std::size_t(0));

@@ -19,6 +19,8 @@ class Split_mix64 {
 public:
   explicit Split_mix64(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next();
+  // A random integer in [lo, hi]: lo + next() mod (hi - lo + 1), by definition.
+  long between(long lo, long hi);
 
 private:
   std::uint64_t state_;
