@@ -77,6 +77,7 @@ Scene uniform(const Uniform_params& p, const Q& scale) {
       if (clear) break;
     }
     placed.push_back(t);
+    if (p.progress) p.progress(placed.size());
     Object o;
     o.first_vertex = s.rest.size();
     o.vertex_count = 3;

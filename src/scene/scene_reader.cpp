@@ -221,17 +221,17 @@ void Reader::check_geometry(const Scene& s, const Load_options& options) const {
       fail(triangle_place(s, t), "the triangle's vertices are collinear at the start time");
   }
   if (options.allow_intersecting) return;
-  for (std::size_t a = 0; a < tri.size(); ++a)
-    for (std::size_t b = a + 1; b < tri.size(); ++b) {
-      std::vector<Vec3> shared;
-      if (s.triangle_object[a] == s.triangle_object[b])
-        for (std::size_t va : s.triangles[a])
-          for (std::size_t vb : s.triangles[b])
-            if (va == vb) shared.push_back(at_start[va]);
-      if (triangles_conflict(tri[a], tri[b], shared))
-        fail(triangle_place(s, a), "intersects the triangle at " + triangle_place(s, b) +
-                                       " at the start time (pass --allow-intersecting to accept this)");
-    }
+  for_each_close_pair(tri, [&](std::size_t a, std::size_t b) {
+    std::vector<Vec3> shared;
+    if (s.triangle_object[a] == s.triangle_object[b])
+      for (std::size_t va : s.triangles[a])
+        for (std::size_t vb : s.triangles[b])
+          if (va == vb) shared.push_back(at_start[va]);
+    if (triangles_conflict(tri[a], tri[b], shared))
+      fail(triangle_place(s, a), "intersects the triangle at " + triangle_place(s, b) +
+                                     " at the start time (pass --allow-intersecting to accept this)");
+    return false;
+  });
 }
 
 Scene Reader::read(const Json_value& doc, const Load_options& options) const {

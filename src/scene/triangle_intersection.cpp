@@ -1,5 +1,7 @@
 #include "kvd/scene/triangle_intersection.hpp"
 
+#include <algorithm>
+
 namespace kvd::scene {
 
 namespace {
@@ -104,6 +106,51 @@ bool triangles_conflict(const Triangle3& a, const Triangle3& b, const std::vecto
   for (const auto& c : candidates)
     if (!in_allowed(c, allowed)) return true;
   return false;
+}
+
+void for_each_close_pair(const std::vector<Triangle3>& tris,
+                         const std::function<bool(std::size_t, std::size_t)>& visit) {
+  const std::size_t n = tris.size();
+  if (n < 2) return;
+  std::vector<std::array<std::pair<mpq_class, mpq_class>, 3>> box(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto [lo, hi] = std::minmax({tris[i][0][k], tris[i][1][k], tris[i][2][k]});
+      box[i][k] = {lo, hi};
+    }
+  // The sweep axis: the one where the boxes' extents are smallest relative
+  // to the scene's span.
+  std::size_t axis = 0;
+  mpq_class best = -1;
+  for (std::size_t k = 0; k < 3; ++k) {
+    mpq_class lo = box[0][k].first, hi = box[0][k].second, total = 0;
+    for (const auto& b : box) {
+      lo = std::min(lo, b[k].first);
+      hi = std::max(hi, b[k].second);
+      total += b[k].second - b[k].first;
+    }
+    if (hi == lo) continue;  // every triangle meets the same plane across this axis
+    const mpq_class ratio = total / (hi - lo);
+    if (best < 0 || ratio < best) best = ratio, axis = k;
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return box[a][axis].first < box[b][axis].first || (box[a][axis].first == box[b][axis].first && a < b);
+  });
+  auto boxes_meet = [&](std::size_t a, std::size_t b) {
+    for (std::size_t k = 0; k < 3; ++k)
+      if (box[a][k].second < box[b][k].first || box[b][k].second < box[a][k].first) return false;
+    return true;
+  };
+  std::vector<std::size_t> active;
+  for (std::size_t i : order) {
+    const mpq_class& start = box[i][axis].first;
+    std::erase_if(active, [&](std::size_t j) { return box[j][axis].second < start; });
+    for (std::size_t j : active)
+      if (boxes_meet(i, j) && visit(std::min(i, j), std::max(i, j))) return;
+    active.push_back(i);
+  }
 }
 
 }  // namespace kvd::scene

@@ -93,8 +93,13 @@ int generate(Args& args) {
     else args.unknown(a);
   }
   if (!family) throw Usage_error("kvd generate: missing the FAMILY (see kvd generate --help)");
-  if (p.triangles > 100000 || box_count > 10000 || blades > 10000)
-    throw Usage_error("kvd generate: at most 100000 triangles, 10000 boxes or 10000 blades");
+  if (p.triangles > 20000 || box_count > 10000 || blades > 10000)
+    throw Usage_error("kvd generate: at most 20000 triangles, 10000 boxes or 10000 blades");
+  if (p.triangles >= 2000)
+    p.progress = [total = p.triangles](std::size_t placed) {
+      if (placed % 1000 == 0 || placed == total)
+        std::cerr << "kvd generate: placed " << placed << " of " << total << " triangles\n";
+    };
   scene::Scene s;
   try {
     if (*family == "uniform-scale") s = scene::uniform_scale(p);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +26,8 @@ struct Uniform_params {
   Q moving = 1;  // fraction of moving triangles, in [0, 1]
   int degree = 1;  // degree of the random polynomial translations
   std::uint64_t seed = 0;
+  // Called after each triangle is placed (placement is quadratic in N).
+  std::function<void(std::size_t placed)> progress;
 };
 
 // `uniform-scale`: N exactly congruent triangles (one object each) with random

@@ -5,6 +5,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace kvd::scene {
@@ -23,5 +24,13 @@ using Triangle3 = std::array<Vec3, 3>;
 // triangles are coplanar, by clipping A by B. Both clip in the coordinate
 // plane that A projects onto without degenerating.
 bool triangles_conflict(const Triangle3& a, const Triangle3& b, const std::vector<Vec3>& shared);
+
+// Visits every pair (i, j), i < j, of triangles whose closed bounding boxes
+// meet, by sorting the boxes along the axis on which they overlap least and
+// sweeping; stops when `visit` returns true. Pairs that cannot touch are
+// never visited, so a scene of spread-out triangles costs O(n log n) plus the
+// number of close pairs instead of n^2.
+void for_each_close_pair(const std::vector<Triangle3>& triangles,
+                         const std::function<bool(std::size_t, std::size_t)>& visit);
 
 }  // namespace kvd::scene
