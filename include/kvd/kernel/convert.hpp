@@ -1,0 +1,25 @@
+// Exact rationals into a kernel's field: exact for mpq, rounded to nearest
+// for double and MPFR (at the current precision).
+#pragma once
+
+#include <gmpxx.h>
+
+#include "kvd/kernel/mpfr_number.hpp"
+
+namespace kvd {
+
+template <class FT>
+FT from_rational(const mpq_class& q);
+
+template <>
+inline mpq_class from_rational<mpq_class>(const mpq_class& q) {
+  return q;
+}
+template <>
+inline Mpfr_number from_rational<Mpfr_number>(const mpq_class& q) {
+  return Mpfr_number(q);
+}
+template <>
+double from_rational<double>(const mpq_class& q);  // src/kernel/convert.cpp
+
+}  // namespace kvd

@@ -1,0 +1,57 @@
+// The single classification entry point (DESIGN.md section 4): the side of a
+// symbolic vertex with respect to a symbolic plane on (t, t + δ).
+//
+// Decided lexicographically, in the same code for every kernel:
+//  1. incidence by construction: ON (0), without arithmetic;
+//  2. the sign at t of f = dot(plane, point), times the sign of the point's W
+//     (scene vertices have W > 0; derived vertices may not);
+//  3. if that is zero, the sign just after t (kernel sign_after);
+//  4. if f is identically zero in t, the symbolic perturbation: vertex i moved
+//     by ε g_i (moment curve), ε → 0+ after time; the sign is that of the
+//     first coefficient of f in ε that is not identically zero in t, decided
+//     by rules 2–3. Rule 4 answers "unresolved" (0, counted in
+//     `unresolved()`) only if every coefficient vanishes; see
+//     proofs/classification.md for when that can happen.
+#pragma once
+
+#include <optional>
+
+#include "kvd/scene/scene.hpp"
+#include "kvd/symbolic/scene_geometry.hpp"
+#include "kvd/symbolic/symbolic.hpp"
+
+namespace kvd::predicates {
+
+enum class Rule { incidence, value, after, perturbation, unresolved };
+
+struct Classification {
+  int side;   // -1, 0 (on), +1
+  Rule rule;  // the rule that decided
+};
+
+template <class K>
+class Classifier {
+public:
+  Classifier(const K& k, const scene::Scene& s);
+
+  Classification classify(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
+                          const typename K::Time& t) const;
+  int side(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p, const typename K::Time& t) const {
+    return classify(v, p, t).side;
+  }
+
+  const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
+  // How many classifications rule 4 could not decide.
+  long unresolved() const { return unresolved_; }
+
+private:
+  int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
+
+  const K* k_;
+  symbolic::Scene_geometry<typename K::Poly> motion_;
+  mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
+  bool z_euclidean_;
+  mutable long unresolved_ = 0;
+};
+
+}  // namespace kvd::predicates

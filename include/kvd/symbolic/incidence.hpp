@@ -1,0 +1,22 @@
+// Incidence by construction (thesis 5.3.1): whether a symbolic vertex lies on
+// a symbolic plane because of how both are defined, decided from the scene's
+// incidence alone, with no arithmetic.
+#pragma once
+
+#include "kvd/scene/scene.hpp"
+#include "kvd/symbolic/symbolic.hpp"
+
+namespace kvd::symbolic {
+
+// True when v lies on p for every motion of the scene:
+//  * a P-plane SP(V) holds the endpoint V, every vertex built on SP(V)
+//    (thread (e, V), internal thread (V, E, T)), and, when z is Euclidean,
+//    every axis vertex (all P-planes contain the line x ∨ z);
+//  * an E-plane SP(E) holds E's endpoints, every point of edge E (thread and
+//    intersection vertices on E), and every vertex built on SP(E);
+//  * a triangle's plane SP(T) holds T's vertices, every point on T's edges,
+//    and every vertex built on SP(T).
+// `z_euclidean` says whether the decomposition point z is Euclidean.
+bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& v, const Symbolic_plane& p, bool z_euclidean);
+
+}  // namespace kvd::symbolic

@@ -1,0 +1,80 @@
+// Symbolic planes, edges and vertices (thesis 5.1): cuts and fragment
+// corners named by the scene features that define them, never by
+// coordinates. Ids are the scene's global vertex, edge and triangle ids.
+#pragma once
+
+#include <array>
+#include <compare>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace kvd::symbolic {
+
+// SP(V): the P-plane through vertex V containing both decomposition
+// directions; SP(E): the E-plane through edge E containing z; SP(T): the
+// plane of triangle T.
+struct Symbolic_plane {
+  enum class Kind { P, E, T };
+  Kind kind;
+  std::size_t id;
+  auto operator<=>(const Symbolic_plane&) const = default;
+};
+
+// SE(e): a scene edge; SE(V,T): P-plane of V meets the plane of T;
+// SE(E,T): E-plane of E meets the plane of T.
+struct Symbolic_edge {
+  enum class Kind { edge, pt, et };
+  Kind kind;
+  std::size_t a, b;  // (e, -), (V, T) or (E, T)
+  auto operator<=>(const Symbolic_edge&) const = default;
+};
+
+// The five vertices of thesis 5.1.3, plus the one a Euclidean decomposition
+// point needs (DESIGN.md section 4): with z Euclidean every P-plane contains
+// the line L = x ∨ z, and L meets a triangle's plane in a vertex lying on all
+// P-planes at once.
+struct Symbolic_vertex {
+  enum class Kind {
+    endpoint,               // (v)
+    intersection,           // (e, E): scene edge e meets the E-plane of edge E
+    thread,                 // (e, V): scene edge e meets the P-plane of vertex V
+    internal_intersection,  // (E1, E2, T), E1 < E2: two E-planes meet the plane of T
+    internal_thread,        // (V, E, T): a P-plane and an E-plane meet the plane of T
+    axis                    // (T): L = x ∨ z meets the plane of T
+  };
+  Kind kind;
+  std::array<std::size_t, 3> ids{};
+  auto operator<=>(const Symbolic_vertex&) const = default;
+
+  static Symbolic_vertex endpoint(std::size_t v) { return {Kind::endpoint, {v, 0, 0}}; }
+  static Symbolic_vertex intersection(std::size_t e, std::size_t cut_edge) { return {Kind::intersection, {e, cut_edge, 0}}; }
+  static Symbolic_vertex thread(std::size_t e, std::size_t cut_vertex) { return {Kind::thread, {e, cut_vertex, 0}}; }
+  static Symbolic_vertex internal_intersection(std::size_t e1, std::size_t e2, std::size_t t) {
+    return {Kind::internal_intersection, {std::min(e1, e2), std::max(e1, e2), t}};
+  }
+  static Symbolic_vertex internal_thread(std::size_t v, std::size_t e, std::size_t t) {
+    return {Kind::internal_thread, {v, e, t}};
+  }
+  static Symbolic_vertex axis(std::size_t t) { return {Kind::axis, {t, 0, 0}}; }
+};
+
+// An edge fragment (SV1, SV2, SE), and a triangle fragment: corners and the
+// edges leaving them, in a fixed cyclic orientation.
+struct Edge_fragment {
+  Symbolic_vertex a, b;
+  Symbolic_edge edge;
+  auto operator<=>(const Edge_fragment&) const = default;
+};
+struct Triangle_fragment {
+  std::vector<Symbolic_vertex> corners;
+  std::vector<Symbolic_edge> sides;  // sides[i] runs from corners[i] to corners[i+1]
+  bool operator==(const Triangle_fragment&) const = default;
+};
+
+// Readable names for traces and test messages: "P(3)", "SV-thread(e4,P2)".
+std::string to_string(const Symbolic_plane& p);
+std::string to_string(const Symbolic_edge& e);
+std::string to_string(const Symbolic_vertex& v);
+
+}  // namespace kvd::symbolic

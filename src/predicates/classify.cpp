@@ -1,0 +1,54 @@
+#include "kvd/predicates/classify.hpp"
+
+#include "kvd/geometry/plucker.hpp"
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/symbolic/incidence.hpp"
+
+namespace kvd::predicates {
+
+template <class K>
+Classifier<K>::Classifier(const K& k, const scene::Scene& s)
+    : k_(&k), motion_(symbolic::motion_geometry<typename K::FT>(s)), z_euclidean_(!s.z[3].is_zero()) {}
+
+template <class K>
+int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t) const {
+  const int s = k_->sign_at(f, t);
+  return s != 0 ? s : k_->sign_after(f, t);
+}
+
+template <class K>
+Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
+                                       const typename K::Time& t) const {
+  if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) return {0, Rule::incidence};
+  const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
+  const Point4<typename K::Poly> x = motion_.point(v);
+  const typename K::Poly f = dot(motion_.plane(p), x);
+  if (!f.is_zero()) {
+    // A direction (W identically zero) counts as W > 0, as in kvd::side.
+    const int w = derived && !x[3].is_zero() ? lex_sign(x[3], t) : 1;
+    const int s = k_->sign_at(f, t);
+    if (s != 0) return {s * w, Rule::value};
+    return {k_->sign_after(f, t) * w, Rule::after};
+  }
+  // Rule 4: expand in ε; coefficients are polynomials in t.
+  if (!perturbed_) perturbed_.emplace(symbolic::perturbed(motion_));
+  const auto xe = perturbed_->point(v);
+  const auto fe = dot(perturbed_->plane(p), xe);
+  int w = 1;
+  if (derived)
+    for (const auto& c : xe[3].coefficients())
+      if (!c.is_zero()) {
+        w = lex_sign(c, t);
+        break;
+      }
+  for (const auto& c : fe.coefficients())
+    if (!c.is_zero()) return {lex_sign(c, t) * w, Rule::perturbation};
+  ++unresolved_;
+  return {0, Rule::unresolved};
+}
+
+#define KVD_INSTANTIATE_CLASSIFIER(K) template class Classifier<K>;
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_CLASSIFIER)
+
+}  // namespace kvd::predicates

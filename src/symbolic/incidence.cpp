@@ -1,0 +1,62 @@
+#include "kvd/symbolic/incidence.hpp"
+
+#include <algorithm>
+
+namespace kvd::symbolic {
+
+namespace {
+
+using K = Symbolic_vertex::Kind;
+
+// The scene edge a vertex lies on by construction, if any.
+bool on_edge(const scene::Scene& s, const Symbolic_vertex& v, std::size_t e) {
+  switch (v.kind) {
+    case K::endpoint: return s.edges[e][0] == v.ids[0] || s.edges[e][1] == v.ids[0];
+    case K::intersection:
+    case K::thread: return v.ids[0] == e;
+    default: return false;
+  }
+}
+
+bool edge_of_triangle(const scene::Scene& s, std::size_t e, std::size_t t) {
+  const auto& te = s.triangle_edges[t];
+  return std::find(te.begin(), te.end(), e) != te.end();
+}
+
+}  // namespace
+
+bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& v, const Symbolic_plane& p, bool z_euclidean) {
+  switch (p.kind) {
+    case Symbolic_plane::Kind::P:
+      switch (v.kind) {
+        case K::endpoint: return v.ids[0] == p.id;
+        case K::thread: return v.ids[1] == p.id;
+        case K::internal_thread: return v.ids[0] == p.id;
+        case K::axis: return z_euclidean;
+        default: return false;
+      }
+    case Symbolic_plane::Kind::E:
+      if (on_edge(s, v, p.id)) return true;
+      switch (v.kind) {
+        case K::intersection: return v.ids[1] == p.id;
+        case K::internal_intersection: return v.ids[0] == p.id || v.ids[1] == p.id;
+        case K::internal_thread: return v.ids[1] == p.id;
+        default: return false;
+      }
+    case Symbolic_plane::Kind::T:
+      switch (v.kind) {
+        case K::endpoint: {
+          const auto& tv = s.triangles[p.id];
+          return std::find(tv.begin(), tv.end(), v.ids[0]) != tv.end();
+        }
+        case K::intersection:
+        case K::thread: return edge_of_triangle(s, v.ids[0], p.id);
+        case K::internal_intersection:
+        case K::internal_thread: return v.ids[2] == p.id;
+        case K::axis: return v.ids[0] == p.id;
+      }
+  }
+  return false;
+}
+
+}  // namespace kvd::symbolic

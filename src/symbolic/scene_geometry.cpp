@@ -1,0 +1,107 @@
+#include "kvd/symbolic/scene_geometry.hpp"
+
+#include "kvd/geometry/plucker_impl.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kernel/instantiate.hpp"
+
+namespace kvd::symbolic {
+
+template <class R>
+Plane4<R> Scene_geometry<R>::plane(const Symbolic_plane& p) const {
+  const scene::Scene& s = *scene_;
+  switch (p.kind) {
+    case Symbolic_plane::Kind::P: return join(join(x_, z_), vertex(p.id));
+    case Symbolic_plane::Kind::E: return join(join(vertex(s.edges[p.id][0]), vertex(s.edges[p.id][1])), z_);
+    case Symbolic_plane::Kind::T: {
+      const auto& t = s.triangles[p.id];
+      return join(join(vertex(t[0]), vertex(t[1])), vertex(t[2]));
+    }
+  }
+  return {};
+}
+
+template <class R>
+Point4<R> Scene_geometry<R>::point(const Symbolic_vertex& v) const {
+  using K = Symbolic_vertex::Kind;
+  using P = Symbolic_plane::Kind;
+  const scene::Scene& s = *scene_;
+  const auto& i = v.ids;
+  auto edge_line = [&](std::size_t e) { return join(vertex(s.edges[e][0]), vertex(s.edges[e][1])); };
+  switch (v.kind) {
+    case K::endpoint: return vertex(i[0]);
+    case K::intersection: return meet(edge_line(i[0]), plane({P::E, i[1]}));
+    case K::thread: return meet(edge_line(i[0]), plane({P::P, i[1]}));
+    case K::internal_intersection: return meet(plane({P::E, i[0]}), plane({P::E, i[1]}), plane({P::T, i[2]}));
+    case K::internal_thread: return meet(plane({P::P, i[0]}), plane({P::E, i[1]}), plane({P::T, i[2]}));
+    case K::axis: return meet(join(x_, z_), plane({P::T, i[0]}));
+  }
+  return {};
+}
+
+namespace {
+
+template <class FT>
+Poly<FT> convert(const scene::QPoly& p) {
+  std::vector<FT> c;
+  for (const auto& q : p.coefficients()) c.push_back(from_rational<FT>(q));
+  return Poly<FT>(std::move(c));
+}
+
+// The point as polynomials over FT, negated if its W is negative at `start`
+// (a point with W identically zero, a direction, is kept as it is).
+template <class FT>
+Point4<Poly<FT>> normalized(const scene::Motion_point& p, const scene::Q& start) {
+  const int sign_w = sgn(p[3](start));
+  Point4<Poly<FT>> r;
+  for (int k = 0; k < 4; ++k) r[k] = convert<FT>(sign_w < 0 ? scene::QPoly(-p[k]) : p[k]);
+  return r;
+}
+
+}  // namespace
+
+template <class FT>
+Scene_geometry<Poly<FT>> motion_geometry(const scene::Scene& s) {
+  std::vector<Point4<Poly<FT>>> v;
+  for (std::size_t i = 0; i < s.rest.size(); ++i) v.push_back(normalized<FT>(s.position(i), s.start));
+  return Scene_geometry<Poly<FT>>(s, std::move(v), normalized<FT>(s.x, s.start), normalized<FT>(s.z, s.start));
+}
+
+template <class FT>
+Scene_geometry<FT> at_instant(const Scene_geometry<Poly<FT>>& g, const FT& t) {
+  auto eval = [&](const Point4<Poly<FT>>& p) -> Point4<FT> { return {{p[0](t), p[1](t), p[2](t), p[3](t)}}; };
+  std::vector<Point4<FT>> v;
+  for (const auto& p : g.vertices()) v.push_back(eval(p));
+  return Scene_geometry<FT>(g.scene(), std::move(v), eval(g.x()), eval(g.z()));
+}
+
+template <class FT>
+Scene_geometry<Poly<Poly<FT>>> perturbed(const Scene_geometry<Poly<FT>>& g) {
+  using T = Poly<FT>;
+  using E = Poly<T>;
+  auto constant = [](const T& c) { return E(std::vector<T>{c}); };
+  std::vector<Point4<E>> v;
+  for (std::size_t i = 0; i < g.vertices().size(); ++i) {
+    const Point4<T>& p = g.vertex(i);
+    const long n = static_cast<long>(i) + 1;
+    const long gi[3] = {n, n * n, n * n * n};
+    Point4<E> q;
+    for (int k = 0; k < 3; ++k) q[k] = E(std::vector<T>{p[k], p[3] * T(FT(gi[k]))});
+    q[3] = constant(p[3]);
+    v.push_back(q);
+  }
+  auto lift = [&](const Point4<T>& p) -> Point4<E> {
+    return {{constant(p[0]), constant(p[1]), constant(p[2]), constant(p[3])}};
+  };
+  return Scene_geometry<E>(g.scene(), std::move(v), lift(g.x()), lift(g.z()));
+}
+
+#define KVD_INSTANTIATE_SCENE_GEOMETRY(FT)                                                   \
+  template class Scene_geometry<FT>;                                                         \
+  template class Scene_geometry<Poly<FT>>;                                                   \
+  template class Scene_geometry<Poly<Poly<FT>>>;                                             \
+  template Scene_geometry<Poly<FT>> motion_geometry<FT>(const scene::Scene&);                \
+  template Scene_geometry<FT> at_instant<FT>(const Scene_geometry<Poly<FT>>&, const FT&);    \
+  template Scene_geometry<Poly<Poly<FT>>> perturbed<FT>(const Scene_geometry<Poly<FT>>&);
+KVD_FOR_EACH_FIELD(KVD_INSTANTIATE_SCENE_GEOMETRY)
+
+}  // namespace kvd::symbolic
