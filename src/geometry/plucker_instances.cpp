@@ -1,4 +1,5 @@
-// The Plücker templates, compiled once for every ring of every kernel.
+// The Plücker templates, compiled once for every ring of every kernel and
+// for the rings of the symbolic perturbation.
 #include "kvd/geometry/plucker_impl.hpp"
 #include "kvd/kernel/instantiate.hpp"
 
@@ -13,4 +14,5 @@
 
 namespace kvd {
 KVD_FOR_EACH_RING(KVD_INSTANTIATE_PLUCKER)
+KVD_FOR_EACH_PERTURBED_RING(KVD_INSTANTIATE_PLUCKER)
 }

@@ -18,8 +18,9 @@ int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t
 }
 
 template <class K>
-Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
+Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, const symbolic::Symbolic_plane& p,
                                        const typename K::Time& t) const {
+  const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
   if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) return {0, Rule::incidence};
   const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
   const Point4<typename K::Poly> x = motion_.point(v);

@@ -25,7 +25,18 @@ bool edge_of_triangle(const scene::Scene& s, std::size_t e, std::size_t t) {
 
 }  // namespace
 
-bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& v, const Symbolic_plane& p, bool z_euclidean) {
+Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v) {
+  if (v.kind == K::internal_thread && edge_of_triangle(s, v.ids[1], v.ids[2]))
+    return Symbolic_vertex::thread(v.ids[1], v.ids[0]);
+  if (v.kind == K::internal_intersection) {
+    if (edge_of_triangle(s, v.ids[0], v.ids[2])) return Symbolic_vertex::intersection(v.ids[0], v.ids[1]);
+    if (edge_of_triangle(s, v.ids[1], v.ids[2])) return Symbolic_vertex::intersection(v.ids[1], v.ids[0]);
+  }
+  return v;
+}
+
+bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& given, const Symbolic_plane& p, bool z_euclidean) {
+  const Symbolic_vertex v = canonical(s, given);
   switch (p.kind) {
     case Symbolic_plane::Kind::P:
       switch (v.kind) {

@@ -1,6 +1,5 @@
 #include "kvd/symbolic/scene_geometry.hpp"
 
-#include "kvd/geometry/plucker_impl.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/instantiate.hpp"
 

@@ -20,6 +20,13 @@
   X(kvd::Poly<double>)       \
   X(kvd::Poly<kvd::Mpfr_number>)
 
+// X(R) for the rings of the symbolic perturbation: polynomials in ε whose
+// coefficients are polynomials in t (DESIGN.md section 4, rule 4).
+#define KVD_FOR_EACH_PERTURBED_RING(X)  \
+  X(kvd::Poly<kvd::Poly<mpq_class>>)    \
+  X(kvd::Poly<kvd::Poly<double>>)       \
+  X(kvd::Poly<kvd::Poly<kvd::Mpfr_number>>)
+
 // X(K) for every kernel.
 #define KVD_FOR_EACH_KERNEL(X) \
   X(kvd::Exact_kernel)         \

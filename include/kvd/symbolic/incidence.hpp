@@ -8,7 +8,15 @@
 
 namespace kvd::symbolic {
 
-// True when v lies on p for every motion of the scene:
+// The canonical name of a vertex: an internal vertex built on an E-plane of
+// one of its own triangle's edges lies on that edge, so SV(V, E, T) with E an
+// edge of T is the thread vertex (E, V), and SV(E1, E2, T) with E1 an edge of
+// T is the intersection vertex (E1, E2). Other vertices are returned as they
+// are. Symbolic identity is identity of canonical names.
+Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v);
+
+// True when v lies on p for every motion of the scene (v is canonicalised
+// first):
 //  * a P-plane SP(V) holds the endpoint V, every vertex built on SP(V)
 //    (thread (e, V), internal thread (V, E, T)), and, when z is Euclidean,
 //    every axis vertex (all P-planes contain the line x ∨ z);
