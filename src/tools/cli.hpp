@@ -37,5 +37,6 @@ std::string json_string(const std::string& s);
 
 int info(Args& args);
 int generate(Args& args);
+int build(Args& args);
 
 }  // namespace kvd::cli

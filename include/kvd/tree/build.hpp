@@ -1,0 +1,28 @@
+// Construction of the KVD (thesis 5.3.3): for every triangle in priority
+// order, the P-cuts of the vertices it owns, then the E-cuts of the edges it
+// owns, then its T-cut, each filtered down the tree and split by the nodes it
+// crosses. Shared vertices and edges are cut once, by the triangle of
+// highest priority containing them. Intersection cuts stay implicit in the
+// E-nodes' fragments (thesis 5.3.3, 6.4.2).
+#pragma once
+
+#include <stdexcept>
+
+#include "kvd/predicates/classify.hpp"
+#include "kvd/scene/scene.hpp"
+#include "kvd/tree/kvd_tree.hpp"
+
+namespace kvd::tree {
+
+// Raised when a fragment would have to be split by a T-node: the triangles
+// intersect at the build instant.
+class Build_error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// The tree valid on (t, t + δ).
+template <class K>
+Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t);
+
+}  // namespace kvd::tree

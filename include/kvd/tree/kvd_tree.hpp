@@ -1,0 +1,43 @@
+// The KVD tree (thesis 4.4, 5.2): a BSP whose nodes are P-, E- and T-cuts
+// named by scene features, each holding its fragment symbolically. The
+// negative side of a node's plane is its left subtree, the positive side its
+// right subtree.
+#pragma once
+
+#include <cstddef>
+#include <variant>
+#include <vector>
+
+#include "kvd/symbolic/symbolic.hpp"
+
+namespace kvd::tree {
+
+using symbolic::Edge_fragment;
+using symbolic::Symbolic_plane;
+using symbolic::Symbolic_vertex;
+using symbolic::Triangle_fragment;
+
+// A P-node's fragment is its vertex; an E-node's a piece of its edge; a
+// T-node's a convex piece of its triangle.
+using Fragment = std::variant<Symbolic_vertex, Edge_fragment, Triangle_fragment>;
+
+struct Node {
+  Symbolic_plane cut;
+  Fragment fragment;
+  int left = -1, right = -1;  // indices into Kvd_tree::nodes, -1 for none
+};
+
+struct Tree_statistics {
+  std::size_t p_nodes = 0, e_nodes = 0, t_nodes = 0, nodes = 0;
+  std::size_t height = 0;  // nodes on the longest root-to-leaf path
+};
+
+class Kvd_tree {
+public:
+  std::vector<Node> nodes;
+  int root = -1;
+
+  Tree_statistics statistics() const;
+};
+
+}  // namespace kvd::tree

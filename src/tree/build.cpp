@@ -1,0 +1,189 @@
+#include "kvd/tree/build.hpp"
+
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/symbolic/incidence.hpp"
+
+namespace kvd::tree {
+
+namespace {
+
+using SE = symbolic::Symbolic_edge;
+using SP = Symbolic_plane;
+using SV = Symbolic_vertex;
+
+template <class K>
+class Builder {
+public:
+  Builder(const predicates::Classifier<K>& c, const typename K::Time& t)
+      : c_(c), t_(t), s_(c.motion().scene()) {}
+
+  Kvd_tree run() {
+    for (std::size_t t : s_.priority_order) {
+      const std::size_t base = 7 * s_.triangle_priority[t];
+      const auto& tv = s_.triangles[t];
+      const auto& te = s_.triangle_edges[t];
+      for (std::size_t k = 0; k < 3; ++k)
+        if (s_.vertex_cut_priority[tv[k]] == base + k) insert({SP::Kind::P, tv[k]}, SV::endpoint(tv[k]));
+      for (std::size_t k = 0; k < 3; ++k)
+        if (s_.edge_cut_priority[te[k]] == base + 3 + k) {
+          const auto& e = s_.edges[te[k]];
+          insert({SP::Kind::E, te[k]}, Edge_fragment{SV::endpoint(e[0]), SV::endpoint(e[1]), SE{SE::Kind::edge, te[k], 0}});
+        }
+      Triangle_fragment f;
+      for (std::size_t k = 0; k < 3; ++k) {
+        f.corners.push_back(SV::endpoint(tv[k]));
+        f.sides.push_back(SE{SE::Kind::edge, te[k], 0});
+      }
+      insert({SP::Kind::T, t}, std::move(f));
+    }
+    return std::move(tree_);
+  }
+
+private:
+  // Filters (cut, fragment) down from the root; iterative over the path,
+  // recursive only where a fragment splits.
+  void insert(const SP& cut, Fragment f) { insert_below(-1, false, cut, std::move(f)); }
+
+  void insert_below(int parent, bool right, const SP& cut, Fragment f) {
+    for (;;) {
+      const int at = parent < 0 ? tree_.root : (right ? node(parent).right : node(parent).left);
+      if (at < 0) {
+        tree_.nodes.push_back(Node{cut, std::move(f)});
+        const int i = static_cast<int>(tree_.nodes.size()) - 1;
+        if (parent < 0) tree_.root = i;
+        else if (right) node(parent).right = i;
+        else node(parent).left = i;
+        return;
+      }
+      const SP plane = node(at).cut;
+      auto [neg, pos] = split(f, plane);
+      if (neg && pos) {
+        insert_below(at, false, cut, std::move(*neg));
+        parent = at, right = true, f = std::move(*pos);
+      } else {
+        parent = at, right = pos.has_value(), f = std::move(pos ? *pos : *neg);
+      }
+    }
+  }
+
+  Node& node(int i) { return tree_.nodes[static_cast<std::size_t>(i)]; }
+
+  int side(const SV& v, const SP& p) const { return c_.side(v, p, t_); }
+
+  // The vertex where `edge` crosses `plane`.
+  SV crossing(const SE& edge, const SP& plane) const {
+    if (plane.kind == SP::Kind::T)
+      throw Build_error("a fragment crosses the plane of triangle " + std::to_string(plane.id) +
+                        ": the triangles intersect at the build instant");
+    const bool p_cut = plane.kind == SP::Kind::P;
+    SV v{};
+    switch (edge.kind) {
+      case SE::Kind::edge: v = p_cut ? SV::thread(edge.a, plane.id) : SV::intersection(edge.a, plane.id); break;
+      // Two P-planes meet only on the axis x ∨ z (a Euclidean z makes them a pencil).
+      case SE::Kind::pt: v = p_cut ? SV::axis(edge.b) : SV::internal_thread(edge.a, plane.id, edge.b); break;
+      case SE::Kind::et:
+        v = p_cut ? SV::internal_thread(plane.id, edge.a, edge.b) : SV::internal_intersection(edge.a, plane.id, edge.b);
+        break;
+    }
+    return symbolic::canonical(s_, v);
+  }
+
+  using Piece = std::optional<Fragment>;
+
+  // The parts of f on the negative and the positive side of the plane.
+  std::pair<Piece, Piece> split(const Fragment& f, const SP& plane) const {
+    if (const auto* v = std::get_if<SV>(&f)) {
+      // A point on the plane can only be one that lies there by construction
+      // and never happens in priority order; it goes to the positive side.
+      if (side(*v, plane) < 0) return {f, std::nullopt};
+      return {std::nullopt, f};
+    }
+    if (const auto* e = std::get_if<Edge_fragment>(&f)) {
+      const int sa = side(e->a, plane), sb = side(e->b, plane);
+      if (sa <= 0 && sb <= 0 && (sa < 0 || sb < 0)) return {f, std::nullopt};
+      if (sa >= 0 && sb >= 0) return {std::nullopt, f};
+      const SV x = crossing(e->edge, plane);
+      const Edge_fragment first{e->a, x, e->edge}, second{x, e->b, e->edge};
+      return sa < 0 ? std::pair<Piece, Piece>{first, second} : std::pair<Piece, Piece>{second, first};
+    }
+    const auto& t = std::get<Triangle_fragment>(f);
+    std::vector<int> s;
+    bool any_neg = false, any_pos = false;
+    for (const auto& c : t.corners) {
+      s.push_back(side(c, plane));
+      any_neg = any_neg || s.back() < 0;
+      any_pos = any_pos || s.back() > 0;
+    }
+    if (!any_pos) return {f, std::nullopt};
+    if (!any_neg) return {std::nullopt, f};
+    const SE cut_line{plane.kind == SP::Kind::P ? SE::Kind::pt : SE::Kind::et, plane.id, 0};
+    return {clip(t, s, -1, cut_line), clip(t, s, +1, cut_line)};
+  }
+
+  // The part of a crossed triangle fragment on side `keep` (corners keep
+  // their order; new corners where sides cross, joined by the cut line).
+  Triangle_fragment clip(const Triangle_fragment& t, const std::vector<int>& s, int keep, SE cut_line) const {
+    const std::size_t triangle = triangle_of(t);
+    cut_line.b = triangle;
+    Triangle_fragment out;
+    const std::size_t n = t.corners.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      const int si = s[i] * keep, sj = s[j] * keep;
+      if (si >= 0) {
+        out.corners.push_back(t.corners[i]);
+        out.sides.push_back(sj < 0 ? (si > 0 ? t.sides[i] : cut_line) : t.sides[i]);
+        if (si > 0 && sj < 0) {
+          out.corners.push_back(crossing(with_triangle(t.sides[i], triangle), plane_of(cut_line)));
+          out.sides.push_back(cut_line);
+        }
+      } else if (sj > 0) {
+        out.corners.push_back(crossing(with_triangle(t.sides[i], triangle), plane_of(cut_line)));
+        out.sides.push_back(t.sides[i]);
+      }
+    }
+    return out;
+  }
+
+  static SP plane_of(const SE& cut_line) {
+    return {cut_line.kind == SE::Kind::pt ? SP::Kind::P : SP::Kind::E, cut_line.a};
+  }
+  // Internal sides carry their triangle; scene edges do not need it.
+  static SE with_triangle(SE side, std::size_t triangle) {
+    if (side.kind != SE::Kind::edge) side.b = triangle;
+    return side;
+  }
+  // The triangle a fragment belongs to: the one whose edges its scene-edge
+  // sides are, or the one named by an internal side.
+  std::size_t triangle_of(const Triangle_fragment& t) const {
+    for (const auto& side : t.sides)
+      if (side.kind != SE::Kind::edge) return side.b;
+    // Only scene edges: the fragment is the whole triangle.
+    const auto& tris = s_.edge_triangles[t.sides[0].a];
+    for (std::size_t cand : tris) {
+      const auto& te = s_.triangle_edges[cand];
+      bool all = true;
+      for (const auto& side : t.sides) all = all && (side.a == te[0] || side.a == te[1] || side.a == te[2]);
+      if (all) return cand;
+    }
+    throw Build_error("a triangle fragment that belongs to no triangle");
+  }
+
+  const predicates::Classifier<K>& c_;
+  const typename K::Time& t_;
+  const scene::Scene& s_;
+  Kvd_tree tree_;
+};
+
+}  // namespace
+
+template <class K>
+Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t) {
+  return Builder<K>(classifier, t).run();
+}
+
+#define KVD_INSTANTIATE_BUILD(K) template Kvd_tree build<K>(const predicates::Classifier<K>&, const typename K::Time&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_BUILD)
+
+}  // namespace kvd::tree
