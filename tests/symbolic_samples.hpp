@@ -3,6 +3,7 @@
 // through one of its own defining features), capped in number.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "kvd/scene/scene.hpp"
@@ -37,6 +38,16 @@ inline std::vector<symbolic::Symbolic_vertex> sample_vertices(const scene::Scene
       if (!shares_vertex(s, te[0], e)) out.push_back(SV::internal_intersection(te[0], e, t));
     for (std::size_t v = 0; v < nv; v += 1 + nv / cap)
       if (!endpoint_of(s, v, te[1])) out.push_back(SV::internal_thread(v, te[1], t));
+    // Vertices on the line w ∨ z, for a vertex w off the triangle: an internal
+    // thread whose P-vertex is an endpoint of its edge, and the E-planes of
+    // two edges meeting at w.
+    const auto& tv = s.triangles[t];
+    for (std::size_t w = 0; w < nv; w += 1 + nv / cap) {
+      if (std::find(tv.begin(), tv.end(), w) != tv.end()) continue;
+      const auto& at_w = s.vertex_edges[w];
+      if (!at_w.empty()) out.push_back(SV::internal_thread(w, at_w[0], t));
+      if (at_w.size() >= 2) out.push_back(SV::internal_intersection(at_w[0], at_w[1], t));
+    }
     if (with_axis) out.push_back(SV::axis(t));
   }
   return out;

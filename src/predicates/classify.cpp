@@ -45,7 +45,7 @@ Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, c
       }
   for (const auto& c : fe.coefficients())
     if (!c.is_zero()) return {lex_sign(c, t) * w, Rule::perturbation};
-  ++unresolved_;
+  if (unresolved_++ < 16) unresolved_cases_.emplace_back(v, p);
   return {0, Rule::unresolved};
 }
 

@@ -1,6 +1,7 @@
 #include "kvd/symbolic/incidence.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace kvd::symbolic {
 
@@ -23,6 +24,20 @@ bool edge_of_triangle(const scene::Scene& s, std::size_t e, std::size_t t) {
   return std::find(te.begin(), te.end(), e) != te.end();
 }
 
+// The scene vertex w such that v lies on the line w ∨ z by construction: an
+// internal thread (V, E, T) with V an endpoint of E (P(V) and E(E) share that
+// line), or an internal intersection of two E-planes of edges sharing w. The
+// line lies in P(w) and in the E-plane of every edge at w.
+std::optional<std::size_t> on_line_to_z(const scene::Scene& s, const Symbolic_vertex& v) {
+  const auto& i = v.ids;
+  if (v.kind == K::internal_thread && (s.edges[i[1]][0] == i[0] || s.edges[i[1]][1] == i[0])) return i[0];
+  if (v.kind == K::internal_intersection)
+    for (std::size_t a : s.edges[i[0]])
+      for (std::size_t b : s.edges[i[1]])
+        if (a == b) return a;
+  return std::nullopt;
+}
+
 }  // namespace
 
 Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v) {
@@ -37,6 +52,10 @@ Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v) {
 
 bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& given, const Symbolic_plane& p, bool z_euclidean) {
   const Symbolic_vertex v = canonical(s, given);
+  if (const auto w = on_line_to_z(s, v)) {
+    if (p.kind == Symbolic_plane::Kind::P && p.id == *w) return true;
+    if (p.kind == Symbolic_plane::Kind::E && (s.edges[p.id][0] == *w || s.edges[p.id][1] == *w)) return true;
+  }
   switch (p.kind) {
     case Symbolic_plane::Kind::P:
       switch (v.kind) {

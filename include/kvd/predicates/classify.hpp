@@ -15,6 +15,8 @@
 #pragma once
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "kvd/scene/scene.hpp"
 #include "kvd/symbolic/scene_geometry.hpp"
@@ -41,8 +43,11 @@ public:
   }
 
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
-  // How many classifications rule 4 could not decide.
+  // How many classifications rule 4 could not decide, and the first few.
   long unresolved() const { return unresolved_; }
+  const std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>>& unresolved_cases() const {
+    return unresolved_cases_;
+  }
 
 private:
   int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
@@ -52,6 +57,7 @@ private:
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
   mutable long unresolved_ = 0;
+  mutable std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>> unresolved_cases_;
 };
 
 }  // namespace kvd::predicates

@@ -23,7 +23,11 @@ Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v);
 //  * an E-plane SP(E) holds E's endpoints, every point of edge E (thread and
 //    intersection vertices on E), and every vertex built on SP(E);
 //  * a triangle's plane SP(T) holds T's vertices, every point on T's edges,
-//    and every vertex built on SP(T).
+//    and every vertex built on SP(T);
+//  * a vertex on the line w ∨ z by construction (an internal thread (w, E, T)
+//    with w an endpoint of E, or an internal intersection of the E-planes of
+//    two edges meeting at w) lies on P(w) and on the E-plane of every edge
+//    at w, all of which contain that line.
 // `z_euclidean` says whether the decomposition point z is Euclidean.
 bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& v, const Symbolic_plane& p, bool z_euclidean);
 

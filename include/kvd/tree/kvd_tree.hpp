@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -38,6 +39,11 @@ public:
   int root = -1;
 
   Tree_statistics statistics() const;
+  // The tree in pre-order, one node a line, indented by depth, each child
+  // prefixed by "-" (left) or "+" (right): "+ E(2) [SV(e2,P1) SV(v0) SE(e2)]".
+  std::string describe() const;
 };
+
+std::string to_string(const Fragment& f);
 
 }  // namespace kvd::tree
