@@ -1,10 +1,12 @@
 // KVD construction: a hand-checked whole tree, statistics, and the same tree
 // from every kernel on a scene in general position.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include "kernels.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
+#include "kvd/tree/compare.hpp"
 
 using namespace kvd;
 
@@ -41,14 +43,58 @@ TEST_CASE("a single triangle gives the hand-checked tree", "[build]") {
   CHECK(st.e_nodes == 4);
   CHECK(st.t_nodes == 2);
   CHECK(st.height == 6);
+  // The canonical serialisation, and its SHA-256 as coreutils' sha256sum
+  // computes it (an implementation independent of ours).
+  CHECK(tree::canonical_serialisation(t) ==
+        "P0:SV(v0)[][P1:SV(v1)[E0:SV(v0),SV(v1)[][E2:SV(v0),SV(e2,P1)[][T0:SV(v0),SV(v1),SV(e2,P1)[][]]]]"
+        "[P2:SV(v2)[E1:SV(v1),SV(v2)[][E2:SV(v2),SV(e2,P1)[][T0:SV(v1),SV(v2),SV(e2,P1)[][]]]][]]]");
+  CHECK(tree::structure_hash(t) == "ee01ccff09824c143347fbe23e841fb9d4b65ae6c2168339ca4d0a5f770f6f48");
+}
+
+TEST_CASE("structural comparison names the first difference", "[build][compare]") {
+  const kvd::Exact_kernel k;
+  scene::Load_options o;
+  const scene::Scene s = load("cycle3.json");
+  o.seed = 1;
+  const scene::Scene reseeded = scene::load_scene(std::string(KVD_SOURCE_DIR) + "/data/cycle3.json", o);
+  const auto a = build_at(k, s, 0), b = build_at(k, s, 0);
+  CHECK_FALSE(tree::first_difference(a, b));
+  CHECK(tree::structure_hash(a) == tree::structure_hash(b));
+  // Another priority order gives another tree, told apart at the root or below.
+  const auto c = build_at(k, reseeded, 0);
+  REQUIRE(s.priority_order != reseeded.priority_order);
+  const auto diff = tree::first_difference(a, c);
+  REQUIRE(diff);
+  CHECK(diff->rfind("at root", 0) == 0);
+  CHECK(tree::structure_hash(a) != tree::structure_hash(c));
+  // A rotated triangle fragment is the same fragment.
+  tree::Kvd_tree rotated = a;
+  for (auto& n : rotated.nodes)
+    if (auto* f = std::get_if<tree::Triangle_fragment>(&n.fragment)) {
+      std::rotate(f->corners.begin(), f->corners.begin() + 1, f->corners.end());
+      std::rotate(f->sides.begin(), f->sides.begin() + 1, f->sides.end());
+    }
+  CHECK_FALSE(tree::first_difference(a, rotated));
+  // A changed fragment is reported with the node's cut.
+  tree::Kvd_tree changed = a;
+  for (auto& n : changed.nodes)
+    if (auto* f = std::get_if<tree::Edge_fragment>(&n.fragment)) {
+      f->b = symbolic::Symbolic_vertex::endpoint(99);
+      break;
+    }
+  const auto what = tree::first_difference(a, changed);
+  REQUIRE(what);
+  CHECK(what->find("the fragments of E(") != std::string::npos);
 }
 
 TEMPLATE_TEST_CASE("every kernel builds the same tree in general position", "[build]", kvd::Double_kernel,
                    kvd::Mpfr_kernel) {
   const scene::Scene s = load("random-20.json");
   for (long t : {0L, 1L}) {
-    const std::string exact = build_at(kvd::Exact_kernel(), s, t).describe();
-    CHECK(build_at(TestType(), s, t).describe() == exact);
+    const auto exact = build_at(kvd::Exact_kernel(), s, t);
+    const auto other = build_at(TestType(), s, t);
+    CHECK(other.describe() == exact.describe());
+    CHECK(tree::structure_hash(other) == tree::structure_hash(exact));
   }
 }
 

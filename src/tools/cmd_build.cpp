@@ -11,6 +11,7 @@
 #include "kvd/scene/exact_number.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
+#include "kvd/tree/compare.hpp"
 
 namespace kvd::cli {
 
@@ -28,7 +29,7 @@ const char* const build_help =
     "  --seed S        replace the scene's priority order by the seeded one\n"
     "  --kernel K      exact (default), double, or mpfr:BITS\n"
     "  --json          one JSON object: vertices, edges, triangles, p_nodes,\n"
-    "                  e_nodes, t_nodes, nodes, height, seconds\n"
+    "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash\n"
     "\n"
     "Exit status: 0 on success, 2 on a bad scene (including triangles that\n"
     "intersect at T) or bad usage.\n";
@@ -47,12 +48,14 @@ int run(const K& k, const scene::Scene& s, const scene::Q& time, bool json) {
               << ", \"vertices\": " << s.rest.size() << ", \"edges\": " << s.edges.size()
               << ", \"triangles\": " << s.triangles.size() << ", \"p_nodes\": " << st.p_nodes
               << ", \"e_nodes\": " << st.e_nodes << ", \"t_nodes\": " << st.t_nodes << ", \"nodes\": " << st.nodes
-              << ", \"height\": " << st.height << ", \"seconds\": " << secs << "}\n";
+              << ", \"height\": " << st.height << ", \"seconds\": " << secs
+              << ", \"structure_hash\": " << json_string(tree::structure_hash(t)) << "}\n";
   } else {
     std::cout << "kernel:    " << K::name << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
               << "\nedges:     " << s.edges.size() << "\ntriangles: " << s.triangles.size()
               << "\nP-nodes:   " << st.p_nodes << "\nE-nodes:   " << st.e_nodes << "\nT-nodes:   " << st.t_nodes
-              << "\nnodes:     " << st.nodes << "\nheight:    " << st.height << "\nseconds:   " << secs << "\n";
+              << "\nnodes:     " << st.nodes << "\nheight:    " << st.height << "\nseconds:   " << secs
+              << "\nstructure: " << tree::structure_hash(t) << "\n";
   }
   return 0;
 }

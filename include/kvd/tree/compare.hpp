@@ -1,0 +1,30 @@
+// Structural comparison of KVD trees (DESIGN.md sections 5 and 6).
+//
+// Two trees are equal when they have the same shape, node kinds, features
+// and fragments. Fragments are compared in canonical form: an edge
+// fragment's two vertices in increasing order, a triangle fragment's corners
+// starting from the smallest and keeping their cyclic orientation.
+//
+// The canonical serialisation, which the structure hash digests, is the
+// pre-order walk S(n) = TEXT(n) "[" S(left) "][" S(right) "]", with S of an
+// empty subtree the empty string, and TEXT(n) = KIND FEATURE ":" the
+// fragment's canonical vertices joined by ",", e.g. "E2:SV(v0),SV(e2,P1)".
+// KIND is P, E or T; vertices are written as symbolic::to_string writes them.
+// The structure hash is the lowercase hex SHA-256 of that text (UTF-8,
+// no terminator): the same for every kernel and platform.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "kvd/tree/kvd_tree.hpp"
+
+namespace kvd::tree {
+
+std::string canonical_serialisation(const Kvd_tree& t);
+std::string structure_hash(const Kvd_tree& t);
+// The first difference in pre-order, in words ("at root/+/-: node kinds
+// differ: P(3) against E(2)"), or none when the trees are equal.
+std::optional<std::string> first_difference(const Kvd_tree& a, const Kvd_tree& b);
+
+}  // namespace kvd::tree
