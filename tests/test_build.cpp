@@ -113,3 +113,21 @@ TEST_CASE("degenerate scenes build", "[build]") {
     CHECK(c.unresolved() == 0);
   }
 }
+
+TEST_CASE("a build at T equals the build at 0 of the scene re-timed by t -> t + T", "[build]") {
+  const kvd::Exact_kernel k;
+  for (const char* name : {"two-triangles.json", "rotor.json", "random-20.json", "viewpoint.json"}) {
+    const scene::Scene s = load(name);
+    for (const mpq_class& shift : {mpq_class(1, 2), mpq_class(1), mpq_class(7, 3)}) {
+      INFO(name << " at " << shift.get_str());
+      const scene::Scene r = scene::retimed(s, shift);
+      CHECK(scene::evaluate(r.position(0), mpq_class(0)) == s.position_at(0, shift));
+      const predicates::Classifier<kvd::Exact_kernel> cs(k, s), cr(k, r);
+      const auto a = tree::build(cs, kvd::Exact_time(shift));
+      const auto b = tree::build(cr, kvd::Exact_time(0));
+      const auto diff = tree::first_difference(a, b);
+      CHECK_FALSE(diff);
+      if (diff) UNSCOPED_INFO(*diff);
+    }
+  }
+}

@@ -18,6 +18,26 @@ int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t
 }
 
 template <class K>
+const symbolic::Scene_geometry<Poly<typename K::Poly>>& Classifier<K>::perturbed() const {
+  if (!perturbed_) perturbed_.emplace(symbolic::perturbed(motion_));
+  return *perturbed_;
+}
+
+template <class K>
+Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex& given) const {
+  const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
+  Point4<typename K::Poly> x = motion_.point(v);
+  if (!(x[0].is_zero() && x[1].is_zero() && x[2].is_zero() && x[3].is_zero())) return x;
+  const auto xe = perturbed().point(v);
+  int order = -1;  // the lowest order of ε with a non-zero coordinate
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j <= xe[k].degree(); ++j)
+      if (!xe[k][j].is_zero() && (order < 0 || j < order)) order = j;
+  for (int k = 0; k < 4; ++k) x[k] = order < 0 ? typename K::Poly() : xe[k][order];
+  return x;
+}
+
+template <class K>
 Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, const symbolic::Symbolic_plane& p,
                                        const typename K::Time& t) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
@@ -33,9 +53,8 @@ Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, c
     return {k_->sign_after(f, t) * w, Rule::after};
   }
   // Rule 4: expand in ε; coefficients are polynomials in t.
-  if (!perturbed_) perturbed_.emplace(symbolic::perturbed(motion_));
-  const auto xe = perturbed_->point(v);
-  const auto fe = dot(perturbed_->plane(p), xe);
+  const auto xe = perturbed().point(v);
+  const auto fe = dot(perturbed().plane(p), xe);
   int w = 1;
   if (derived)
     for (const auto& c : xe[3].coefficients())

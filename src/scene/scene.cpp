@@ -9,6 +9,33 @@ namespace kvd::scene {
 
 QPoint evaluate(const Motion_point& p, const Q& t) { return {{p[0](t), p[1](t), p[2](t), p[3](t)}}; }
 
+QPoly shifted(const QPoly& p, const Q& shift) {
+  // Horner in the polynomial ring: p(t + shift) = (...(c_n (t+shift) + c_{n-1}) ...).
+  const QPoly x{shift, Q(1)};
+  QPoly r;
+  for (auto it = p.coefficients().rbegin(); it != p.coefficients().rend(); ++it) r = r * x + QPoly(*it);
+  return r;
+}
+
+Scene retimed(const Scene& s, const Q& shift) {
+  Scene r = s;
+  auto move = [&](Motion_point& p) {
+    for (auto& c : p.c) c = shifted(c, shift);
+  };
+  r.start = s.start - shift;
+  if (s.end) r.end = *s.end - shift;
+  move(r.x);
+  move(r.z);
+  for (auto& o : r.objects) {
+    for (auto& c : o.motion.translation) c = shifted(c, shift);
+    for (auto& row : o.motion.matrix)
+      for (auto& c : row) c = shifted(c, shift);
+    for (auto& v : o.motion.vertices) move(v);
+  }
+  r.derive();
+  return r;
+}
+
 namespace {
 
 // Applies a Motion to the rest position of the object's `local`-th vertex.

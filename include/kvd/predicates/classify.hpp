@@ -43,6 +43,11 @@ public:
   }
 
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
+  // The position of v in the perturbed scene as ε -> 0+: its motion point,
+  // or, where that vanishes identically (v built from planes that coincide
+  // in the unperturbed scene, such as P(v) and E(e) of an edge parallel to
+  // x), the first non-zero order of its ε-expansion.
+  Point4<typename K::Poly> position(const symbolic::Symbolic_vertex& v) const;
   // How many classifications rule 4 could not decide, and the first few.
   long unresolved() const { return unresolved_; }
   const std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>>& unresolved_cases() const {
@@ -51,6 +56,7 @@ public:
 
 private:
   int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
+  const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
 
   const K* k_;
   symbolic::Scene_geometry<typename K::Poly> motion_;

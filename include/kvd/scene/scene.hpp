@@ -99,4 +99,11 @@ public:
 // Evaluates each coordinate at t.
 QPoint evaluate(const Motion_point& p, const Q& t);
 
+// p(t + shift) (a Taylor shift).
+QPoly shifted(const QPoly& p, const Q& shift);
+// The same scene with time re-measured from `shift`: every motion polynomial
+// p(t) becomes p(t + shift), and the time span moves by -shift, so the scene
+// at t equals the original at t + shift.
+Scene retimed(const Scene& s, const Q& shift);
+
 }  // namespace kvd::scene
