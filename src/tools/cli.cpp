@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "kvd/scene/exact_number.hpp"
+
 namespace kvd::cli {
 
 const std::string& Args::value(const std::string& flag) {
@@ -22,6 +24,26 @@ std::uint64_t Args::unsigned_value(const std::string& flag) {
 
 void Args::unknown(const std::string& arg) const {
   throw Usage_error("kvd " + command_ + ": unknown argument '" + arg + "' (see kvd " + command_ + " --help)");
+}
+
+mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text) {
+  std::string why;
+  const auto q = scene::parse_exact_number(text, why);
+  if (!q) throw Usage_error("kvd " + command + ": " + flag + ": " + why + ": '" + text + "'");
+  return *q;
+}
+
+std::array<mpq_class, 3> point_option(const std::string& command, const std::string& flag, const std::string& text) {
+  std::array<mpq_class, 3> p;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((i < 2) != (comma != std::string::npos))
+      throw Usage_error("kvd " + command + ": " + flag + " expects X,Y,Z, got '" + text + "'");
+    p[i] = exact_option(command, flag, text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    start = comma + 1;
+  }
+  return p;
 }
 
 std::string json_string(const std::string& s) { return nlohmann::json(s).dump(); }

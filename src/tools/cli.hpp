@@ -2,6 +2,9 @@
 // contract (0 success, 1 failed check, 2 bad input or usage).
 #pragma once
 
+#include <gmpxx.h>
+
+#include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -32,11 +35,17 @@ private:
   std::size_t i_ = 0;
 };
 
+// An exact number given to option `flag` ("1/3", "0.25"); Usage_error if not.
+mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text);
+// Three exact numbers "X,Y,Z" given to option `flag`.
+std::array<mpq_class, 3> point_option(const std::string& command, const std::string& flag, const std::string& text);
+
 // JSON string literal for s (quotes and escapes).
 std::string json_string(const std::string& s);
 
 int info(Args& args);
 int generate(Args& args);
 int build(Args& args);
+int order(Args& args);
 
 }  // namespace kvd::cli

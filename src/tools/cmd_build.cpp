@@ -83,12 +83,7 @@ int build(Args& args) {
   if (!path) throw Usage_error("kvd build: missing the SCENE file (see kvd build --help)");
   const scene::Scene s = scene::load_scene(*path, options);
   scene::Q time = s.start;
-  if (time_text) {
-    std::string why;
-    const auto q = scene::parse_exact_number(*time_text, why);
-    if (!q) throw Usage_error("kvd build: --time: " + why);
-    time = *q;
-  }
+  if (time_text) time = exact_option("build", "--time", *time_text);
   try {
     if (kernel == "exact") return run(Exact_kernel(), s, time, json);
     if (kernel == "double") return run(Double_kernel(), s, time, json);

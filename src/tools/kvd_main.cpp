@@ -19,6 +19,7 @@ const char* const usage =
     "  info SCENE     validate a scene file and print its counts\n"
     "  generate FAM   write a generated scene (the thesis's data sets and more)\n"
     "  build SCENE    build the KVD at an instant and print its statistics\n"
+    "  order SCENE    list triangle fragments back to front from a viewpoint\n"
     "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     if (command == "info") return kvd::cli::info(args);
     if (command == "generate") return kvd::cli::generate(args);
     if (command == "build") return kvd::cli::build(args);
+    if (command == "order") return kvd::cli::order(args);
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {

@@ -42,6 +42,7 @@ public:
     return classify(v, p, t).side;
   }
 
+  const K& kernel() const { return *k_; }
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
   // The position of v in the perturbed scene as ε -> 0+: its motion point,
   // or, where that vanishes identically (v built from planes that coincide

@@ -1,0 +1,40 @@
+#include "kvd/query/visibility.hpp"
+
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+
+namespace kvd::query {
+
+template <class K>
+std::vector<int> back_to_front(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
+                               const Point4<typename K::FT>& view, const typename K::FT& t) {
+  const K& kernel = classifier.kernel();
+  const auto geometry = symbolic::at_instant(classifier.motion(), t);
+  std::vector<int> order;
+  // An explicit stack of (node, expanded?): an expanded node emits its own
+  // fragment; an unexpanded one pushes near side, itself, far side.
+  std::vector<std::pair<int, bool>> stack;
+  if (tree.root >= 0) stack.emplace_back(tree.root, false);
+  while (!stack.empty()) {
+    const auto [i, expanded] = stack.back();
+    stack.pop_back();
+    const tree::Node& n = tree.nodes[static_cast<std::size_t>(i)];
+    if (expanded) {
+      if (n.cut.kind == symbolic::Symbolic_plane::Kind::T) order.push_back(i);
+      continue;
+    }
+    const int s = side(kernel, view, geometry.plane(n.cut));
+    const int near = s > 0 ? n.right : n.left, far = s > 0 ? n.left : n.right;
+    if (near >= 0) stack.emplace_back(near, false);
+    stack.emplace_back(i, true);
+    if (far >= 0) stack.emplace_back(far, false);
+  }
+  return order;
+}
+
+#define KVD_INSTANTIATE_ORDER(K)                                                                                  \
+  template std::vector<int> back_to_front<K>(const predicates::Classifier<K>&, const tree::Kvd_tree&,           \
+                                             const Point4<typename K::FT>&, const typename K::FT&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_ORDER)
+
+}  // namespace kvd::query
