@@ -70,3 +70,28 @@ TEST_CASE("kvd info exits with status 2 on bad scenes and bad usage", "[cli][inf
   CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/data/boxes.json --frobnicate").status == 2);
   CHECK(run(std::string("info ") + KVD_SOURCE_DIR + "/README.md").status == 2);  // not JSON
 }
+
+TEST_CASE("kvd order and kvd render describe and paint every fragment", "[cli][order][render]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/single-triangle.json";
+  // The single triangle has two T-fragments (see test_build.cpp), listed
+  // with exact coordinates.
+  const Run order = run("order " + scene + " --view 1,1,10 --json");
+  CHECK(order.status == 0);
+  CHECK(order.out.rfind("{\"fragments\": [{\"triangle\": 0, \"vertices\": [[", 0) == 0);
+  std::size_t fragments = 0;
+  for (std::size_t at = order.out.find("\"triangle\""); at != std::string::npos; at = order.out.find("\"triangle\"", at + 1))
+    ++fragments;
+  CHECK(fragments == 2);
+  CHECK(order.out.find("[\"1/3\", \"1\", \"1/3\"]") != std::string::npos);  // the thread vertex X, exactly
+  const Run svg = run("render " + scene + " --view 1,1,10 --cells");
+  CHECK(svg.status == 0);
+  std::size_t polygons = 0;
+  for (std::size_t at = svg.out.find("<polygon"); at != std::string::npos; at = svg.out.find("<polygon", at + 1)) ++polygons;
+  CHECK(polygons == 2);
+  CHECK(svg.out.find("#d62728") != std::string::npos);  // the P-cut side is drawn red
+  CHECK(run("order " + scene).status == 2);             // no --view
+  CHECK(run("order " + scene + " --view 1,2").status == 2);
+  CHECK(run("render " + scene + " --view 1,1,10 --out picture.png").status == 2);
+  CHECK(run("build " + scene + " --kernel mpfr:x").status == 2);
+  CHECK(run("build " + scene + " --time 1/0").status == 2);
+}

@@ -40,6 +40,10 @@ mpq_class exact_option(const std::string& command, const std::string& flag, cons
 // Three exact numbers "X,Y,Z" given to option `flag`.
 std::array<mpq_class, 3> point_option(const std::string& command, const std::string& flag, const std::string& text);
 
+// Writes `text` to `path` through a temporary file in the same folder and a
+// rename, so that the file is either complete or untouched.
+void write_atomically(const std::string& command, const std::string& path, const std::string& text);
+
 // JSON string literal for s (quotes and escapes).
 std::string json_string(const std::string& s);
 
@@ -47,5 +51,6 @@ int info(Args& args);
 int generate(Args& args);
 int build(Args& args);
 int order(Args& args);
+int render(Args& args);
 
 }  // namespace kvd::cli

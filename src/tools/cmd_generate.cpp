@@ -4,7 +4,6 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <unistd.h>
 
 #include "cli.hpp"
 #include "kvd/scene/exact_number.hpp"
@@ -40,27 +39,6 @@ const char* const generate_help =
     "  -o FILE          write to FILE instead of stdout\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or parameters that cannot be met.\n";
-
-// Writes `text` to `path` through a temporary file in the same folder and a
-// rename, so that the file is either complete or untouched.
-void write_atomically(const std::string& path, const std::string& text) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path temp = target.parent_path() / (target.filename().string() + ".tmp" + std::to_string(getpid()));
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!(out << text) || !out.flush()) {
-      std::error_code ec;
-      std::filesystem::remove(temp, ec);
-      throw Usage_error("kvd generate: cannot write " + path);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw Usage_error("kvd generate: cannot write " + path + " (" + ec.message() + ")");
-  }
-}
 
 }  // namespace
 
@@ -113,7 +91,7 @@ int generate(Args& args) {
   const std::string text = scene::write_scene(s);
   // Every scene goes out only after the loader's full validation accepts it.
   scene::read_scene(text, "generated " + *family);
-  if (output) write_atomically(*output, text);
+  if (output) write_atomically("generate", *output, text);
   else std::cout << text;
   return 0;
 }
