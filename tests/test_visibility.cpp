@@ -41,24 +41,20 @@ std::optional<mpq_class> hit(const V3& view, const V3& d, const std::vector<V3>&
   return s;
 }
 
-// Returns how many pixels the reversed order would paint wrongly, to show
-// that the check has teeth.
-long check_order(const scene::Scene& s, const mpq_class& t, const V3& view, int resolution) {
-  const Exact_kernel k;
-  const predicates::Classifier<Exact_kernel> c(k, s);
-  const tree::Kvd_tree tr = tree::build(c, Exact_time(t));
-  const auto order = query::back_to_front(c, tr, Point4<mpq_class>{{view[0], view[1], view[2], mpq_class(1)}}, t);
-  std::vector<std::vector<V3>> polys;
-  for (int i : order) {
-    std::vector<V3> p;
-    for (const auto& v : std::get<tree::Triangle_fragment>(tr.nodes[static_cast<std::size_t>(i)].fragment).corners) {
-      const auto x = c.position(v);
-      const mpq_class w = x[3](t);
-      p.push_back({x[0](t) / w, x[1](t) / w, x[2](t) / w});
-    }
-    polys.push_back(p);
+// The fragment of T-node i at t, as exact Euclidean points.
+std::vector<V3> polygon(const predicates::Classifier<Exact_kernel>& c, const tree::Kvd_tree& tr, int i, const mpq_class& t) {
+  std::vector<V3> p;
+  for (const auto& v : std::get<tree::Triangle_fragment>(tr.nodes[static_cast<std::size_t>(i)].fragment).corners) {
+    const auto x = c.position(v);
+    const mpq_class w = x[3](t);
+    p.push_back({x[0](t) / w, x[1](t) / w, x[2](t) / w});
   }
-  // Look at the centroid of all vertices; the pixel grid spans the scene.
+  return p;
+}
+
+// Ray directions from `view` through a resolution x resolution grid spanning
+// the scene (looking at the centroid of its vertices, z up).
+std::vector<V3> rays(const scene::Scene& s, const mpq_class& t, const V3& view, int resolution) {
   V3 centre{0, 0, 0};
   mpq_class extent = 0;
   for (std::size_t v = 0; v < s.rest.size(); ++v) {
@@ -76,28 +72,82 @@ long check_order(const scene::Scene& s, const mpq_class& t, const V3& view, int 
   // Scale the image axes to about the scene's extent at the centre's distance.
   const mpq_class fr = extent / (abs(right[0]) + abs(right[1]) + abs(right[2]));
   const mpq_class fu = extent / (abs(up[0]) + abs(up[1]) + abs(up[2]));
-  long pixels_hit = 0, wrong = 0, wrong_reversed = 0;
+  std::vector<V3> out;
   for (int a = 0; a < resolution; ++a)
     for (int b = 0; b < resolution; ++b) {
       const mpq_class u = mpq_class(2 * a + 1 - resolution, resolution), w = mpq_class(2 * b + 1 - resolution, resolution);
       V3 d;
-      for (std::size_t j = 0; j < 3; ++j) d[j] = forward[j] + u * fr * right[j] + w * fu * up[j];
-      std::optional<mpq_class> nearest, first, last;
-      for (const auto& p : polys)
-        if (const auto h = hit(view, d, p)) {
-          if (!first) first = h;
-          last = h;
-          if (!nearest || *h < *nearest) nearest = h;
-        }
-      if (!last) continue;
-      ++pixels_hit;
-      wrong += *last != *nearest;
-      wrong_reversed += *first != *nearest;
+      for (std::size_t j = 0; j < 3; ++j) d[j] = forward[j] + mpq_class(u * fr) * right[j] + mpq_class(w * fu) * up[j];
+      out.push_back(d);
     }
+  return out;
+}
+
+// Returns how many pixels the reversed order would paint wrongly, to show
+// that the check has teeth.
+long check_order(const scene::Scene& s, const mpq_class& t, const V3& view, int resolution) {
+  const Exact_kernel k;
+  const predicates::Classifier<Exact_kernel> c(k, s);
+  const tree::Kvd_tree tr = tree::build(c, Exact_time(t));
+  std::vector<std::vector<V3>> polys;
+  for (int i : query::back_to_front(c, tr, Point4<mpq_class>{{view[0], view[1], view[2], mpq_class(1)}}, t))
+    polys.push_back(polygon(c, tr, i, t));
+  long pixels_hit = 0, wrong = 0, wrong_reversed = 0;
+  for (const V3& d : rays(s, t, view, resolution)) {
+    std::optional<mpq_class> nearest, first, last;
+    for (const auto& p : polys)
+      if (const auto h = hit(view, d, p)) {
+        if (!first) first = h;
+        last = h;
+        if (!nearest || *h < *nearest) nearest = h;
+      }
+    if (!last) continue;
+    ++pixels_hit;
+    wrong += *last != *nearest;
+    wrong_reversed += *first != *nearest;
+  }
   INFO(pixels_hit << " pixels hit");
   CHECK(pixels_hit > 0);
   CHECK(wrong == 0);
   return wrong_reversed;
+}
+
+// With z = view: culled fragments must be hidden wherever a ray meets them.
+// Returns the number of culled fragments that some ray met.
+long check_culling(scene::Scene s, const mpq_class& t, const V3& view, int resolution) {
+  s.z = {{scene::QPoly(view[0]), scene::QPoly(view[1]), scene::QPoly(view[2]), scene::QPoly(1)}};
+  const Exact_kernel k;
+  const predicates::Classifier<Exact_kernel> c(k, s);
+  const tree::Kvd_tree tr = tree::build(c, Exact_time(t));
+  const query::Culling culled = query::back_to_front_culled(c, tr, t);
+  std::vector<bool> drawn(tr.nodes.size(), false);
+  for (int i : culled.order) drawn[static_cast<std::size_t>(i)] = true;
+  std::vector<std::vector<V3>> visible, hidden;
+  std::size_t t_nodes = 0;
+  for (std::size_t i = 0; i < tr.nodes.size(); ++i) {
+    if (tr.nodes[i].cut.kind != symbolic::Symbolic_plane::Kind::T) continue;
+    ++t_nodes;
+    (drawn[i] ? visible : hidden).push_back(polygon(c, tr, static_cast<int>(i), t));
+  }
+  CHECK(culled.triangle_nodes_total == t_nodes);
+  CHECK(culled.triangle_nodes_culled == hidden.size());
+  CHECK(culled.tree_nodes_total == tr.nodes.size());
+  long exposed = 0, met = 0;
+  std::vector<bool> seen(hidden.size(), false);
+  for (const V3& d : rays(s, t, view, resolution)) {
+    std::optional<mpq_class> nearest_visible;
+    for (const auto& p : visible)
+      if (const auto h = hit(view, d, p))
+        if (!nearest_visible || *h < *nearest_visible) nearest_visible = h;
+    for (std::size_t j = 0; j < hidden.size(); ++j)
+      if (const auto h = hit(view, d, hidden[j])) {
+        seen[j] = true;
+        exposed += !nearest_visible || *h < *nearest_visible;
+      }
+  }
+  for (bool b : seen) met += b;
+  CHECK(exposed == 0);
+  return met;
 }
 
 }  // namespace
@@ -117,4 +167,12 @@ TEST_CASE("back-to-front order agrees with an exact z-buffer", "[visibility]") {
     reversed_wrong += check_order(s, s.start + mpq_class(1, 2), cs.view, 16);
   }
   CHECK(reversed_wrong > 100);  // front-to-back painting is caught
+}
+
+TEST_CASE("occlusion culling with z at the viewpoint hides only what is hidden", "[visibility][culling]") {
+  long met = 0;
+  met += check_culling(load("viewpoint.json"), 0, {0, 0, 10}, 24);
+  met += check_culling(load("uniform-scale-50.json"), 0, {50, -80, 50}, 16);
+  met += check_culling(load("uniform-density-25.json"), 0, {-30, 40, 60}, 16);
+  CHECK(met > 0);  // some culled fragment lies under a ray, so the check has teeth
 }

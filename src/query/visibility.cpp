@@ -5,12 +5,30 @@
 
 namespace kvd::query {
 
+namespace {
+
+// The traversal behind both queries: far side, own fragment, near side; with
+// `cull`, the far side of a T-node is skipped and counted instead.
 template <class K>
-std::vector<int> back_to_front(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
-                               const Point4<typename K::FT>& view, const typename K::FT& t) {
+Culling traverse(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
+                 const Point4<typename K::FT>& view, const typename K::FT& t, bool cull) {
   const K& kernel = classifier.kernel();
   const auto geometry = symbolic::at_instant(classifier.motion(), t);
-  std::vector<int> order;
+  Culling r;
+  auto count = [&](int root, std::size_t& nodes, std::size_t& triangles) {
+    std::vector<int> pending{root};
+    while (!pending.empty()) {
+      const int i = pending.back();
+      pending.pop_back();
+      if (i < 0) continue;
+      const tree::Node& n = tree.nodes[static_cast<std::size_t>(i)];
+      ++nodes;
+      triangles += n.cut.kind == symbolic::Symbolic_plane::Kind::T;
+      pending.push_back(n.left);
+      pending.push_back(n.right);
+    }
+  };
+  count(tree.root, r.tree_nodes_total, r.triangle_nodes_total);
   // An explicit stack of (node, expanded?): an expanded node emits its own
   // fragment; an unexpanded one pushes near side, itself, far side.
   std::vector<std::pair<int, bool>> stack;
@@ -19,22 +37,42 @@ std::vector<int> back_to_front(const predicates::Classifier<K>& classifier, cons
     const auto [i, expanded] = stack.back();
     stack.pop_back();
     const tree::Node& n = tree.nodes[static_cast<std::size_t>(i)];
+    const bool triangle = n.cut.kind == symbolic::Symbolic_plane::Kind::T;
     if (expanded) {
-      if (n.cut.kind == symbolic::Symbolic_plane::Kind::T) order.push_back(i);
+      if (triangle) r.order.push_back(i);
       continue;
     }
     const int s = side(kernel, view, geometry.plane(n.cut));
     const int near = s > 0 ? n.right : n.left, far = s > 0 ? n.left : n.right;
     if (near >= 0) stack.emplace_back(near, false);
     stack.emplace_back(i, true);
-    if (far >= 0) stack.emplace_back(far, false);
+    if (far < 0) continue;
+    if (cull && triangle && s != 0) count(far, r.tree_nodes_culled, r.triangle_nodes_culled);
+    else stack.emplace_back(far, false);
   }
-  return order;
+  return r;
+}
+
+}  // namespace
+
+template <class K>
+std::vector<int> back_to_front(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
+                               const Point4<typename K::FT>& view, const typename K::FT& t) {
+  return traverse(classifier, tree, view, t, false).order;
+}
+
+template <class K>
+Culling back_to_front_culled(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
+                             const typename K::FT& t) {
+  const auto z = symbolic::at_instant(classifier.motion(), t).z();
+  return traverse(classifier, tree, z, t, true);
 }
 
 #define KVD_INSTANTIATE_ORDER(K)                                                                                  \
   template std::vector<int> back_to_front<K>(const predicates::Classifier<K>&, const tree::Kvd_tree&,           \
-                                             const Point4<typename K::FT>&, const typename K::FT&);
+                                             const Point4<typename K::FT>&, const typename K::FT&);            \
+  template Culling back_to_front_culled<K>(const predicates::Classifier<K>&, const tree::Kvd_tree&,             \
+                                           const typename K::FT&);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_ORDER)
 
 }  // namespace kvd::query

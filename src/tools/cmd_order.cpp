@@ -12,14 +12,20 @@ namespace kvd::cli {
 
 namespace {
 const char* const order_help =
-    "usage: kvd order SCENE --view X,Y,Z [--time T] [--seed S] [--json]\n"
+    "usage: kvd order SCENE --view X,Y,Z [--time T] [--seed S] [--cull] [--json]\n"
     "\n"
     "Builds the KVD just after time T (default: the scene's start) with the\n"
     "exact kernel and lists its triangle fragments back to front as seen from\n"
     "the point (X, Y, Z): painting them in this order is correct. Every\n"
     "coordinate is an exact rational.\n"
     "\n"
+    "  --cull   occlusion culling (thesis 8.2.4): the decomposition point z is\n"
+    "           replaced by the viewpoint, so that every P- and E-cut passes\n"
+    "           through the viewer, and the far subtree of every T-node is\n"
+    "           skipped; prints the counts of the thesis's Figure 8.9\n"
     "  --json   {\"fragments\": [{\"triangle\": ID, \"vertices\": [[\"x\",\"y\",\"z\"], ...]}, ...]}\n"
+    "           and, with --cull, \"culling\": {\"triangle_nodes_culled\", \"triangle_nodes_total\",\n"
+    "           \"tree_nodes_culled\", \"tree_nodes_total\"}\n"
     "\n"
     "Exit status: 0 on success, 2 on a bad scene or bad usage.\n";
 }  // namespace
@@ -28,7 +34,7 @@ int order(Args& args) {
   std::optional<std::string> path;
   std::optional<std::array<mpq_class, 3>> view;
   mpq_class time;
-  bool json = false, time_given = false;
+  bool json = false, time_given = false, cull = false;
   scene::Load_options options;
   while (!args.done()) {
     const std::string& a = args.next();
@@ -37,6 +43,7 @@ int order(Args& args) {
       return 0;
     }
     if (a == "--json") json = true;
+    else if (a == "--cull") cull = true;
     else if (a == "--seed") options.seed = args.unsigned_value(a);
     else if (a == "--time") time = exact_option("order", a, args.value(a)), time_given = true;
     else if (a == "--view") view = point_option("order", a, args.value(a));
@@ -45,7 +52,8 @@ int order(Args& args) {
   }
   if (!path) throw Usage_error("kvd order: missing the SCENE file (see kvd order --help)");
   if (!view) throw Usage_error("kvd order: missing --view X,Y,Z");
-  const scene::Scene s = scene::load_scene(*path, options);
+  scene::Scene s = scene::load_scene(*path, options);
+  if (cull) s.z = {{scene::QPoly((*view)[0]), scene::QPoly((*view)[1]), scene::QPoly((*view)[2]), scene::QPoly(1)}};
   if (!time_given) time = s.start;
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);
@@ -56,9 +64,11 @@ int order(Args& args) {
     throw Usage_error("kvd order: " + *path + ": " + e.what());
   }
   const Point4<mpq_class> eye{{(*view)[0], (*view)[1], (*view)[2], mpq_class(1)}};
+  const query::Culling culling =
+      cull ? query::back_to_front_culled(c, t, time) : query::Culling{query::back_to_front(c, t, eye, time)};
   std::cout << (json ? "{\"fragments\": [" : "");
   bool first = true;
-  for (int i : query::back_to_front(c, t, eye, time)) {
+  for (int i : culling.order) {
     const tree::Node& n = t.nodes[static_cast<std::size_t>(i)];
     std::cout << (json ? (first ? "{" : ", {") : "") << (json ? "\"triangle\": " : "triangle ") << n.cut.id
               << (json ? ", \"vertices\": [" : ":");
@@ -77,7 +87,17 @@ int order(Args& args) {
     std::cout << (json ? "]}" : "\n");
     first = false;
   }
-  std::cout << (json ? "]}\n" : "");
+  if (cull && json)
+    std::cout << "], \"culling\": {\"triangle_nodes_culled\": " << culling.triangle_nodes_culled
+              << ", \"triangle_nodes_total\": " << culling.triangle_nodes_total
+              << ", \"tree_nodes_culled\": " << culling.tree_nodes_culled
+              << ", \"tree_nodes_total\": " << culling.tree_nodes_total << "}}\n";
+  else if (cull)
+    std::cout << "culled: " << culling.triangle_nodes_culled << " of " << culling.triangle_nodes_total
+              << " triangle nodes, " << culling.tree_nodes_culled << " of " << culling.tree_nodes_total
+              << " tree nodes\n";
+  else
+    std::cout << (json ? "]}\n" : "");
   return 0;
 }
 

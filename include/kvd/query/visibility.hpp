@@ -18,4 +18,19 @@ template <class K>
 std::vector<int> back_to_front(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
                                const Point4<typename K::FT>& view, const typename K::FT& t);
 
+// Occlusion culling (thesis 8.2.4) when the decomposition point z is the
+// viewpoint: every P- and E-plane then passes through the viewer, so the
+// subtree on the far side of an opaque T-node lies behind its fragment and
+// is not traversed. The counts are those of the thesis's Figure 8.9.
+struct Culling {
+  std::vector<int> order;  // the T-nodes drawn, back to front
+  std::size_t triangle_nodes_culled = 0, triangle_nodes_total = 0;
+  std::size_t tree_nodes_culled = 0, tree_nodes_total = 0;
+};
+
+// Requires the scene's z to be a Euclidean point; it is the viewpoint.
+template <class K>
+Culling back_to_front_culled(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
+                             const typename K::FT& t);
+
 }  // namespace kvd::query
