@@ -3,6 +3,7 @@
 // the nearest one hit, with depths compared exactly.
 #include <catch2/catch.hpp>
 
+#include "kvd/bsp/autopartition.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/query/visibility.hpp"
 #include "kvd/scene/scene_io.hpp"
@@ -175,4 +176,37 @@ TEST_CASE("occlusion culling with z at the viewpoint hides only what is hidden",
   met += check_culling(load("uniform-scale-50.json"), 0, {50, -80, 50}, 16);
   met += check_culling(load("uniform-density-25.json"), 0, {-30, 40, 60}, 16);
   CHECK(met > 0);  // some culled fragment lies under a ray, so the check has teeth
+}
+
+TEST_CASE("the baseline auto-partition BSP gives a correct back-to-front order", "[visibility][bsp]") {
+  const struct {
+    const char* scene;
+    V3 view;
+  } cases[] = {{"cycle3.json", {1, 2, 30}}, {"boxes.json", {-9, -7, 11}}, {"uniform-scale-50.json", {50, -80, 50}}};
+  for (const auto& cs : cases) {
+    INFO(cs.scene);
+    const scene::Scene s = load(cs.scene);
+    const bsp::Tree tree = bsp::autopartition(s, s.start);
+    const auto order = bsp::back_to_front(tree, cs.view);
+    CHECK(order.size() == tree.fragments());
+    CHECK(tree.fragments() >= s.triangles.size());
+    long pixels = 0, wrong = 0;
+    for (const V3& d : rays(s, s.start, cs.view, 20)) {
+      std::optional<mpq_class> nearest, last;
+      for (const bsp::Polygon* p : order)
+        if (const auto h = hit(cs.view, d, p->points)) {
+          last = h;
+          if (!nearest || *h < *nearest) nearest = h;
+        }
+      if (!last) continue;
+      ++pixels;
+      wrong += *last != *nearest;
+    }
+    CHECK(pixels > 0);
+    CHECK(wrong == 0);
+  }
+  // One triangle: one node, one fragment.
+  const bsp::Tree single = bsp::autopartition(load("single-triangle.json"), 0);
+  CHECK(single.nodes.size() == 1);
+  CHECK(single.fragments() == 1);
 }

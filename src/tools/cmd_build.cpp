@@ -10,6 +10,7 @@
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/scene/exact_number.hpp"
 #include "kvd/scene/scene_io.hpp"
+#include "kvd/bsp/autopartition.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
 
@@ -18,7 +19,7 @@ namespace kvd::cli {
 namespace {
 
 const char* const build_help =
-    "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--json]\n"
+    "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--bsp] [--json]\n"
     "\n"
     "Builds the KVD of the scene valid just after time T (default: the scene's\n"
     "start) and prints the construction statistics of the thesis's Figure 8.4:\n"
@@ -28,6 +29,9 @@ const char* const build_help =
     "  --time T        an exact number (\"1/3\", \"0.25\")\n"
     "  --seed S        replace the scene's priority order by the seeded one\n"
     "  --kernel K      exact (default), double, or mpfr:BITS\n"
+    "  --bsp           build the baseline instead: the randomized auto-partition\n"
+    "                  BSP with free splits (exact); prints nodes, fragments,\n"
+    "                  height and seconds\n"
     "  --json          one JSON object: vertices, edges, triangles, p_nodes,\n"
     "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash\n"
     "\n"
@@ -60,12 +64,29 @@ int run(const K& k, const scene::Scene& s, const scene::Q& time, bool json) {
   return 0;
 }
 
+int run_bsp(const scene::Scene& s, const scene::Q& time, bool json) {
+  const auto start = std::chrono::steady_clock::now();
+  const bsp::Tree t = bsp::autopartition(s, time);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char secs[32];
+  std::snprintf(secs, sizeof secs, "%.6f", seconds);
+  if (json)
+    std::cout << "{\"structure\": \"bsp\", \"time\": " << json_string(time.get_str()) << ", \"triangles\": "
+              << s.triangles.size() << ", \"nodes\": " << t.nodes.size() << ", \"fragments\": " << t.fragments()
+              << ", \"height\": " << t.height() << ", \"seconds\": " << secs << "}\n";
+  else
+    std::cout << "structure: auto-partition BSP\ntime:      " << time.get_str() << "\ntriangles: " << s.triangles.size()
+              << "\nnodes:     " << t.nodes.size() << "\nfragments: " << t.fragments() << "\nheight:    " << t.height()
+              << "\nseconds:   " << secs << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int build(Args& args) {
   std::optional<std::string> path, time_text;
   std::string kernel = "exact";
-  bool json = false;
+  bool json = false, baseline = false;
   scene::Load_options options;
   while (!args.done()) {
     const std::string& a = args.next();
@@ -74,6 +95,7 @@ int build(Args& args) {
       return 0;
     }
     if (a == "--json") json = true;
+    else if (a == "--bsp") baseline = true;
     else if (a == "--seed") options.seed = args.unsigned_value(a);
     else if (a == "--time") time_text = args.value(a);
     else if (a == "--kernel") kernel = args.value(a);
@@ -84,6 +106,7 @@ int build(Args& args) {
   const scene::Scene s = scene::load_scene(*path, options);
   scene::Q time = s.start;
   if (time_text) time = exact_option("build", "--time", *time_text);
+  if (baseline) return run_bsp(s, time, json);
   try {
     if (kernel == "exact") return run(Exact_kernel(), s, time, json);
     if (kernel == "double") return run(Double_kernel(), s, time, json);
