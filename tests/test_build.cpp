@@ -131,3 +131,21 @@ TEST_CASE("a build at T equals the build at 0 of the scene re-timed by t -> t + 
     }
   }
 }
+
+TEST_CASE("the double kernel's tree on degenerate scenes, recorded", "[build][double]") {
+  // The degenerate-* scenes and boxes have small integer coordinates, exact
+  // in double, and the lexicographic rule (perturbation included) is shared
+  // code: there the double kernel's trees must be identical. cycle3's
+  // fractional coordinates are not exact in double, and its epsilon tests
+  // decide some near-degenerate signs differently: the difference is what
+  // the floating-point build is for, and it is recorded, not asserted.
+  for (const char* name : {"boxes.json", "cycle3.json", "degenerate-shared-y.json", "degenerate-vertical-edge.json",
+                           "degenerate-z-on-plane.json"}) {
+    const scene::Scene s = load(name);
+    const auto exact = build_at(kvd::Exact_kernel(), s, 0);
+    const auto fp = build_at(kvd::Double_kernel(), s, 0);
+    const auto diff = tree::first_difference(exact, fp);
+    WARN(name << ": double kernel " << (diff ? "differs " + *diff : std::string("builds the identical tree")));
+    if (std::string(name) != "cycle3.json") CHECK_FALSE(diff);
+  }
+}

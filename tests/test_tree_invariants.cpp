@@ -121,7 +121,8 @@ void check_invariants(const scene::Scene& s, const mpq_class& t) {
 
 TEST_CASE("built trees satisfy the BSP invariants", "[build][invariants]") {
   for (const char* name : {"single-triangle.json", "two-triangles.json", "cycle3.json", "viewpoint.json", "rotor.json",
-                           "boxes.json", "random-20.json", "uniform-scale-25.json"}) {
+                           "boxes.json", "random-20.json", "uniform-scale-25.json", "degenerate-shared-y.json",
+                           "degenerate-vertical-edge.json", "degenerate-z-on-plane.json"}) {
     INFO(name);
     const scene::Scene s = load(name);
     check_invariants(s, s.start);

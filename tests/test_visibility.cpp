@@ -159,7 +159,9 @@ TEST_CASE("back-to-front order agrees with an exact z-buffer", "[visibility]") {
     V3 view;
   } cases[] = {{"two-triangles.json", {3, -7, 9}},  {"cycle3.json", {1, 2, 30}},     {"cycle3.json", {-5, 4, -20}},
                {"viewpoint.json", {0, 0, 10}},      {"boxes.json", {-9, -7, 11}},    {"random-20.json", {15, -20, 12}},
-               {"rotor.json", {2, 3, 8}},           {"uniform-scale-25.json", {-40, 150, 170}}};
+               {"rotor.json", {2, 3, 8}},           {"uniform-scale-25.json", {-40, 150, 170}},
+               {"degenerate-shared-y.json", {4, -9, 12}}, {"degenerate-vertical-edge.json", {9, -6, 5}},
+               {"degenerate-z-on-plane.json", {1, 1, 2}}};
   long reversed_wrong = 0;
   for (const auto& cs : cases) {
     INFO(cs.scene);
