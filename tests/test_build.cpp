@@ -51,6 +51,33 @@ TEST_CASE("a single triangle gives the hand-checked tree", "[build]") {
   CHECK(tree::structure_hash(t) == "ee01ccff09824c143347fbe23e841fb9d4b65ae6c2168339ca4d0a5f770f6f48");
 }
 
+TEST_CASE("two triangles in separate P-slabs give the hand-checked tree", "[build]") {
+  // The copy (vertices 3-5) has y >= 10 > 3: every one of its cuts passes
+  // P(0), P(1), P(2) on the positive side, and below P(2) it builds the
+  // single-triangle tree again, with E-planes 4(y-10) - x, 11 - 2x - 3(y-10)
+  // and 3x - (y-10), and the thread vertex X' = (1/3, 11, 1/3).
+  const std::string expected =
+      "P(0) [SV(v0)]\n"
+      "  + P(1) [SV(v1)]\n"
+      "    - E(0) [SV(v0) SV(v1) SE(e0)]\n"
+      "      + E(2) [SV(e2,P1) SV(v0) SE(e2)]\n"
+      "        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]\n"
+      "    + P(2) [SV(v2)]\n"
+      "      - E(1) [SV(v1) SV(v2) SE(e1)]\n"
+      "        + E(2) [SV(v2) SV(e2,P1) SE(e2)]\n"
+      "          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]\n"
+      "      + P(3) [SV(v3)]\n"
+      "        + P(4) [SV(v4)]\n"
+      "          - E(3) [SV(v3) SV(v4) SE(e3)]\n"
+      "            + E(5) [SV(e5,P4) SV(v3) SE(e5)]\n"
+      "              + T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]\n"
+      "          + P(5) [SV(v5)]\n"
+      "            - E(4) [SV(v4) SV(v5) SE(e4)]\n"
+      "              + E(5) [SV(v5) SV(e5,P4) SE(e5)]\n"
+      "                + T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,P4) SE(P4,T1)]\n";
+  CHECK(build_at(kvd::Exact_kernel(), load("two-slabs.json"), 0).describe() == expected);
+}
+
 TEST_CASE("structural comparison names the first difference", "[build][compare]") {
   const kvd::Exact_kernel k;
   scene::Load_options o;
