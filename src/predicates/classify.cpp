@@ -18,6 +18,20 @@ int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t
 }
 
 template <class K>
+const Plane4<typename K::Poly>& Classifier<K>::plane_poly(const symbolic::Symbolic_plane& p) const {
+  auto it = planes_.find(p);
+  if (it == planes_.end()) it = planes_.emplace(p, motion_.plane(p)).first;
+  return it->second;
+}
+
+template <class K>
+const Point4<typename K::Poly>& Classifier<K>::point_poly(const symbolic::Symbolic_vertex& v) const {
+  auto it = points_.find(v);
+  if (it == points_.end()) it = points_.emplace(v, motion_.point(v)).first;
+  return it->second;
+}
+
+template <class K>
 const symbolic::Scene_geometry<Poly<typename K::Poly>>& Classifier<K>::perturbed() const {
   if (!perturbed_) perturbed_.emplace(symbolic::perturbed(motion_));
   return *perturbed_;
@@ -26,7 +40,7 @@ const symbolic::Scene_geometry<Poly<typename K::Poly>>& Classifier<K>::perturbed
 template <class K>
 Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex& given) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
-  Point4<typename K::Poly> x = motion_.point(v);
+  Point4<typename K::Poly> x = point_poly(v);
   if (!(x[0].is_zero() && x[1].is_zero() && x[2].is_zero() && x[3].is_zero())) return x;
   const auto xe = perturbed().point(v);
   int order = -1;  // the lowest order of ε with a non-zero coordinate
@@ -43,8 +57,8 @@ Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, c
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
   if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) return {0, Rule::incidence};
   const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
-  const Point4<typename K::Poly> x = motion_.point(v);
-  const typename K::Poly f = dot(motion_.plane(p), x);
+  const Point4<typename K::Poly>& x = point_poly(v);
+  const typename K::Poly f = dot(plane_poly(p), x);
   if (!f.is_zero()) {
     // A direction (W identically zero) counts as W > 0, as in kvd::side.
     const int w = derived && !x[3].is_zero() ? lex_sign(x[3], t) : 1;

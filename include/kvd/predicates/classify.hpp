@@ -14,6 +14,7 @@
 //     proofs/classification.md for when that can happen.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -59,8 +60,15 @@ private:
   int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
 
+  // The motion polynomials of each plane and vertex, computed once: a build
+  // classifies the same features against each other many times.
+  const Plane4<typename K::Poly>& plane_poly(const symbolic::Symbolic_plane& p) const;
+  const Point4<typename K::Poly>& point_poly(const symbolic::Symbolic_vertex& v) const;
+
   const K* k_;
   symbolic::Scene_geometry<typename K::Poly> motion_;
+  mutable std::map<symbolic::Symbolic_plane, Plane4<typename K::Poly>> planes_;
+  mutable std::map<symbolic::Symbolic_vertex, Point4<typename K::Poly>> points_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
   mutable long unresolved_ = 0;
