@@ -91,7 +91,16 @@ TEST_CASE("kvd order and kvd render describe and paint every fragment", "[cli][o
   CHECK(svg.out.find("#d62728") != std::string::npos);  // the P-cut side is drawn red
   CHECK(run("order " + scene).status == 2);             // no --view
   CHECK(run("order " + scene + " --view 1,2").status == 2);
-  CHECK(run("render " + scene + " --view 1,1,10 --out picture.png").status == 2);
+  CHECK(run("render " + scene + " --view 1,1,10 --out picture.jpg").status == 2);
+  // PNG through cairo: the file starts with the PNG signature.
+  const std::string png = std::string(KVD_BINARY_DIR) + "/single-triangle.png";
+  CHECK(run("render " + scene + " --view 1,1,10 --cells --size 64 --out " + png).status == 0);
+  std::FILE* f = std::fopen(png.c_str(), "rb");
+  REQUIRE(f != nullptr);
+  unsigned char magic[8] = {};
+  CHECK(std::fread(magic, 1, 8, f) == 8);
+  std::fclose(f);
+  CHECK(std::string(reinterpret_cast<char*>(magic), 8) == "\x89PNG\r\n\x1a\n");
   CHECK(run("build " + scene + " --kernel mpfr:x").status == 2);
   CHECK(run("build " + scene + " --time 1/0").status == 2);
 }

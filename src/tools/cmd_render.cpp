@@ -12,12 +12,13 @@ namespace kvd::cli {
 
 namespace {
 const char* const render_help =
-    "usage: kvd render SCENE --view X,Y,Z [--time T] [--seed S] [--cells] [--size PX] [--out FILE.svg]\n"
+    "usage: kvd render SCENE --view X,Y,Z [--time T] [--seed S] [--cells] [--size PX] [--out FILE.svg|FILE.png]\n"
     "\n"
     "Builds the KVD just after time T (default: the scene's start) with the\n"
     "exact kernel and paints its triangle fragments back to front as seen from\n"
     "(X, Y, Z), looking at the scene's centre with z up, each object in its own\n"
-    "colour. Writes SVG to FILE (atomically) or to standard output.\n"
+    "colour. Writes SVG or PNG (by FILE's extension) to FILE, atomically, or\n"
+    "SVG to standard output.\n"
     "\n"
     "  --cells     outline every fragment side by the cut that made it:\n"
     "              P-cuts red, E-cuts green, the triangle's own edges blue\n"
@@ -52,8 +53,12 @@ int render(Args& args) {
   }
   if (!path) throw Usage_error("kvd render: missing the SCENE file (see kvd render --help)");
   if (!view) throw Usage_error("kvd render: missing --view X,Y,Z");
-  if (out && (out->size() < 4 || out->substr(out->size() - 4) != ".svg"))
-    throw Usage_error("kvd render: --out must name an .svg file");
+  auto ends_with = [](const std::string& s, const char* tail) {
+    const std::string t(tail);
+    return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+  };
+  const bool png = out && ends_with(*out, ".png");
+  if (out && !png && !ends_with(*out, ".svg")) throw Usage_error("kvd render: --out must name an .svg or .png file");
   const scene::Scene s = scene::load_scene(*path, options);
   const mpq_class t = time ? *time : s.start;
   const Exact_kernel k;
@@ -64,9 +69,9 @@ int render(Args& args) {
   } catch (const tree::Build_error& e) {
     throw Usage_error("kvd render: " + *path + ": " + e.what());
   }
-  const std::string svg = query::render_svg(c, tr, {{(*view)[0], (*view)[1], (*view)[2], mpq_class(1)}}, t, o);
-  if (out) write_atomically("render", *out, svg);
-  else std::cout << svg;
+  const auto picture = query::paint(c, tr, {{(*view)[0], (*view)[1], (*view)[2], mpq_class(1)}}, t, o);
+  if (out) write_atomically("render", *out, png ? query::to_png(picture, o) : query::to_svg(picture, o));
+  else std::cout << query::to_svg(picture, o);
   return 0;
 }
 

@@ -1,0 +1,54 @@
+#include <cairo.h>
+
+#include <stdexcept>
+
+#include "kvd/query/render.hpp"
+
+namespace kvd::query {
+
+namespace {
+
+void set(cairo_t* cr, const Rgb& c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+}  // namespace
+
+std::string to_png(const std::vector<Painted_polygon>& picture, const Render_options& o) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.size, o.size);
+  cairo_t* cr = cairo_create(surface);
+  set(cr, {255, 255, 255});
+  cairo_paint(cr);
+  for (const auto& poly : picture) {
+    cairo_new_path(cr);
+    for (const auto& q : poly.points) cairo_line_to(cr, q[0], q[1]);
+    cairo_close_path(cr);
+    set(cr, poly.fill);
+    cairo_fill_preserve(cr);
+    set(cr, {0x55, 0x55, 0x55});
+    cairo_set_line_width(cr, 0.5);
+    if (o.cells) cairo_new_path(cr);
+    else cairo_stroke(cr);
+    if (!o.cells) continue;
+    cairo_set_line_width(cr, 1.2);
+    for (std::size_t k = 0; k < poly.points.size(); ++k) {
+      const auto& a = poly.points[k];
+      const auto& b = poly.points[(k + 1) % poly.points.size()];
+      cairo_move_to(cr, a[0], a[1]);
+      cairo_line_to(cr, b[0], b[1]);
+      set(cr, poly.sides[k]);
+      cairo_stroke(cr);
+    }
+  }
+  std::string bytes;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append, &bytes);
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+  if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(cairo_status_to_string(status));
+  return bytes;
+}
+
+}  // namespace kvd::query
