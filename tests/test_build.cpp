@@ -13,6 +13,18 @@ using namespace kvd;
 namespace {
 scene::Scene load(const char* name) { return scene::load_scene(std::string(KVD_SOURCE_DIR) + "/data/" + name); }
 
+// The single triangle's tree (hand-derived in the test below).
+const std::string single_triangle_tree =
+    "P(0) [SV(v0)]\n"
+    "  + P(1) [SV(v1)]\n"
+    "    - E(0) [SV(v0) SV(v1) SE(e0)]\n"
+    "      + E(2) [SV(e2,P1) SV(v0) SE(e2)]\n"
+    "        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]\n"
+    "    + P(2) [SV(v2)]\n"
+    "      - E(1) [SV(v1) SV(v2) SE(e1)]\n"
+    "        + E(2) [SV(v2) SV(e2,P1) SE(e2)]\n"
+    "          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]\n";
+
 template <class K>
 tree::Kvd_tree build_at(const K& k, const scene::Scene& s, long t) {
   const predicates::Classifier<K> c(k, s);
@@ -25,16 +37,7 @@ TEST_CASE("a single triangle gives the hand-checked tree", "[build]") {
   // positive; E-planes 4y - x (e0), 11 - 2x - 3y (e1), 3x - y (e2), positive
   // as written; the P-plane y = 1 cuts e2 at X = (1/3, 1, 1/3) and the
   // triangle along SE(P1,T0).
-  const std::string expected =
-      "P(0) [SV(v0)]\n"
-      "  + P(1) [SV(v1)]\n"
-      "    - E(0) [SV(v0) SV(v1) SE(e0)]\n"
-      "      + E(2) [SV(e2,P1) SV(v0) SE(e2)]\n"
-      "        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]\n"
-      "    + P(2) [SV(v2)]\n"
-      "      - E(1) [SV(v1) SV(v2) SE(e1)]\n"
-      "        + E(2) [SV(v2) SV(e2,P1) SE(e2)]\n"
-      "          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]\n";
+  const std::string expected = single_triangle_tree;
   const kvd::Exact_kernel k;
   const tree::Kvd_tree t = build_at(k, load("single-triangle.json"), 0);
   CHECK(t.describe() == expected);
@@ -57,15 +60,7 @@ TEST_CASE("two triangles in separate P-slabs give the hand-checked tree", "[buil
   // single-triangle tree again, with E-planes 4(y-10) - x, 11 - 2x - 3(y-10)
   // and 3x - (y-10), and the thread vertex X' = (1/3, 11, 1/3).
   const std::string expected =
-      "P(0) [SV(v0)]\n"
-      "  + P(1) [SV(v1)]\n"
-      "    - E(0) [SV(v0) SV(v1) SE(e0)]\n"
-      "      + E(2) [SV(e2,P1) SV(v0) SE(e2)]\n"
-      "        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]\n"
-      "    + P(2) [SV(v2)]\n"
-      "      - E(1) [SV(v1) SV(v2) SE(e1)]\n"
-      "        + E(2) [SV(v2) SV(e2,P1) SE(e2)]\n"
-      "          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]\n"
+      single_triangle_tree +
       "      + P(3) [SV(v3)]\n"
       "        + P(4) [SV(v4)]\n"
       "          - E(3) [SV(v3) SV(v4) SE(e3)]\n"
