@@ -30,6 +30,28 @@ void Args::unknown(const std::string& arg) const {
   throw Usage_error("kvd " + command_ + ": unknown argument '" + arg + "' (see kvd " + command_ + " --help)");
 }
 
+bool Scene_args::take(Args& args, const std::string& a) {
+  const std::string& command = args.command();
+  if (a == "--json") json = true;
+  else if (a == "--seed") load.seed = args.unsigned_value(a);
+  else if (a == "--allow-intersecting") load.allow_intersecting = true;
+  else if (a == "--time" && wants_time) time = exact_option(command, a, args.value(a));
+  else if (a == "--view" && wants_view) view = point_option(command, a, args.value(a));
+  else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
+  else return false;
+  return true;
+}
+
+scene::Scene Scene_args::load_scene(const std::string& command) const {
+  if (!path) throw Usage_error("kvd " + command + ": missing the SCENE file (see kvd " + command + " --help)");
+  return scene::load_scene(*path, load);
+}
+
+const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& command) const {
+  if (!view) throw Usage_error("kvd " + command + ": missing --view X,Y,Z");
+  return *view;
+}
+
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text) {
   std::string why;
   const auto q = scene::parse_exact_number(text, why);

@@ -6,9 +6,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "kvd/scene/scene_io.hpp"
+#include "kvd/tree/build.hpp"
 
 namespace kvd::cli {
 
@@ -25,6 +29,7 @@ public:
   bool done() const { return i_ >= args_.size(); }
   const std::string& next() { return args_.at(i_++); }
   // The value following option `flag`.
+  const std::string& command() const { return command_; }
   const std::string& value(const std::string& flag);
   std::uint64_t unsigned_value(const std::string& flag);
   [[noreturn]] void unknown(const std::string& arg) const;
@@ -34,6 +39,36 @@ private:
   std::vector<std::string> args_;
   std::size_t i_ = 0;
 };
+
+// The arguments the scene commands share: SCENE (a file, or - for standard
+// input), --seed S, --allow-intersecting, --json, and, where the command
+// wants them, --time T and --view X,Y,Z.
+struct Scene_args {
+  bool wants_time = false, wants_view = false;
+  std::optional<std::string> path;
+  scene::Load_options load;
+  std::optional<mpq_class> time;
+  std::optional<std::array<mpq_class, 3>> view;
+  bool json = false;
+
+  // Consumes `a` (and its value) if it is one of these; returns whether it did.
+  bool take(Args& args, const std::string& a);
+  // The scene (Usage_error if SCENE is missing, Scene_error if it is bad).
+  scene::Scene load_scene(const std::string& command) const;
+  // --view, which this command requires.
+  const std::array<mpq_class, 3>& required_view(const std::string& command) const;
+};
+
+// The KVD just after t; triangles that intersect then are bad input.
+template <class K>
+tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
+                          const predicates::Classifier<K>& classifier, const typename K::Time& t) {
+  try {
+    return tree::build(classifier, t);
+  } catch (const tree::Build_error& e) {
+    throw Usage_error("kvd " + command + ": " + path + ": " + e.what());
+  }
+}
 
 // An exact number given to option `flag` ("1/3", "0.25"); Usage_error if not.
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text);

@@ -39,10 +39,10 @@ const char* const build_help =
     "intersect at T) or bad usage.\n";
 
 template <class K>
-int run(const K& k, const scene::Scene& s, const scene::Q& time, bool json) {
+int run(const K& k, const std::string& path, const scene::Scene& s, const scene::Q& time, bool json) {
   const auto start = std::chrono::steady_clock::now();
   const predicates::Classifier<K> classifier(k, s);
-  const tree::Kvd_tree t = tree::build(classifier, k.time(from_rational<typename K::FT>(time)));
+  const tree::Kvd_tree t = build_tree("build", path, classifier, k.time(from_rational<typename K::FT>(time)));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const tree::Tree_statistics st = t.statistics();
   char secs[32];
@@ -84,41 +84,31 @@ int run_bsp(const scene::Scene& s, const scene::Q& time, bool json) {
 }  // namespace
 
 int build(Args& args) {
-  std::optional<std::string> path, time_text;
+  Scene_args sa;
+  sa.wants_time = true;
   std::string kernel = "exact";
-  bool json = false, baseline = false;
-  scene::Load_options options;
+  bool baseline = false;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
       std::cout << build_help;
       return 0;
     }
-    if (a == "--json") json = true;
-    else if (a == "--bsp") baseline = true;
-    else if (a == "--seed") options.seed = args.unsigned_value(a);
-    else if (a == "--time") time_text = args.value(a);
+    if (a == "--bsp") baseline = true;
     else if (a == "--kernel") kernel = args.value(a);
-    else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
-    else args.unknown(a);
+    else if (!sa.take(args, a)) args.unknown(a);
   }
-  if (!path) throw Usage_error("kvd build: missing the SCENE file (see kvd build --help)");
-  const scene::Scene s = scene::load_scene(*path, options);
-  scene::Q time = s.start;
-  if (time_text) time = exact_option("build", "--time", *time_text);
-  if (baseline) return run_bsp(s, time, json);
-  try {
-    if (kernel == "exact") return run(Exact_kernel(), s, time, json);
-    if (kernel == "double") return run(Double_kernel(), s, time, json);
-    if (kernel.rfind("mpfr:", 0) == 0) {
-      const std::string bits = kernel.substr(5);
-      if (bits.empty() || bits.size() > 5 || bits.find_first_not_of("0123456789") != std::string::npos ||
-          std::stoul(bits) < 2 || std::stoul(bits) > 65536)
-        throw Usage_error("kvd build: --kernel mpfr:BITS needs BITS between 2 and 65536");
-      return run(Mpfr_kernel(static_cast<unsigned>(std::stoul(bits))), s, time, json);
-    }
-  } catch (const tree::Build_error& e) {
-    throw Usage_error(std::string("kvd build: ") + *path + ": " + e.what());
+  const scene::Scene s = sa.load_scene("build");
+  const scene::Q time = sa.time ? *sa.time : s.start;
+  if (baseline) return run_bsp(s, time, sa.json);
+  if (kernel == "exact") return run(Exact_kernel(), *sa.path, s, time, sa.json);
+  if (kernel == "double") return run(Double_kernel(), *sa.path, s, time, sa.json);
+  if (kernel.rfind("mpfr:", 0) == 0) {
+    const std::string bits = kernel.substr(5);
+    if (bits.empty() || bits.size() > 5 || bits.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoul(bits) < 2 || std::stoul(bits) > 65536)
+      throw Usage_error("kvd build: --kernel mpfr:BITS needs BITS between 2 and 65536");
+    return run(Mpfr_kernel(static_cast<unsigned>(std::stoul(bits))), *sa.path, s, time, sa.json);
   }
   throw Usage_error("kvd build: unknown kernel '" + kernel + "' (exact, double or mpfr:BITS)");
 }

@@ -23,32 +23,27 @@ const char* const info_help =
 }  // namespace
 
 int info(Args& args) {
-  std::optional<std::string> path;
-  bool json = false;
-  scene::Load_options options;
+  Scene_args sa;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
       std::cout << info_help;
       return 0;
     }
-    if (a == "--json") json = true;
-    else if (a == "--seed") options.seed = args.unsigned_value(a);
-    else if (a == "--allow-intersecting") options.allow_intersecting = true;
-    else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
-    else args.unknown(a);
+    if (!sa.take(args, a)) args.unknown(a);
   }
-  if (!path) throw Usage_error("kvd info: missing the SCENE file (see kvd info --help)");
-  const scene::Scene s = scene::load_scene(*path, options);
+  const scene::Scene s = sa.load_scene("info");
+  const std::string& path = *sa.path;
+  const bool json = sa.json;
   const std::size_t moving = s.moving_triangle_count();
   if (json) {
-    std::cout << "{\"file\": " << json_string(*path) << ", \"name\": " << json_string(s.name)
+    std::cout << "{\"file\": " << json_string(path) << ", \"name\": " << json_string(s.name)
               << ", \"objects\": " << s.objects.size() << ", \"vertices\": " << s.rest.size()
               << ", \"edges\": " << s.edges.size() << ", \"triangles\": " << s.triangles.size()
               << ", \"moving_triangles\": " << moving << ", \"max_motion_degree\": " << s.max_motion_degree()
               << "}\n";
   } else {
-    std::cout << "scene:             " << (s.name.empty() ? "(unnamed)" : s.name) << " (" << *path << ")\n"
+    std::cout << "scene:             " << (s.name.empty() ? "(unnamed)" : s.name) << " (" << path << ")\n"
               << "objects:           " << s.objects.size() << "\n"
               << "vertices:          " << s.rest.size() << "\n"
               << "edges:             " << s.edges.size() << "\n"

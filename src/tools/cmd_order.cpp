@@ -31,39 +31,27 @@ const char* const order_help =
 }  // namespace
 
 int order(Args& args) {
-  std::optional<std::string> path;
-  std::optional<std::array<mpq_class, 3>> view;
-  mpq_class time;
-  bool json = false, time_given = false, cull = false;
-  scene::Load_options options;
+  Scene_args sa;
+  sa.wants_time = sa.wants_view = true;
+  bool cull = false;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
       std::cout << order_help;
       return 0;
     }
-    if (a == "--json") json = true;
-    else if (a == "--cull") cull = true;
-    else if (a == "--seed") options.seed = args.unsigned_value(a);
-    else if (a == "--time") time = exact_option("order", a, args.value(a)), time_given = true;
-    else if (a == "--view") view = point_option("order", a, args.value(a));
-    else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
-    else args.unknown(a);
+    if (a == "--cull") cull = true;
+    else if (!sa.take(args, a)) args.unknown(a);
   }
-  if (!path) throw Usage_error("kvd order: missing the SCENE file (see kvd order --help)");
-  if (!view) throw Usage_error("kvd order: missing --view X,Y,Z");
-  scene::Scene s = scene::load_scene(*path, options);
-  if (cull) s.z = {{scene::QPoly((*view)[0]), scene::QPoly((*view)[1]), scene::QPoly((*view)[2]), scene::QPoly(1)}};
-  if (!time_given) time = s.start;
+  scene::Scene s = sa.load_scene("order");
+  const auto& view = sa.required_view("order");
+  if (cull) s.z = {{scene::QPoly(view[0]), scene::QPoly(view[1]), scene::QPoly(view[2]), scene::QPoly(1)}};
+  const mpq_class time = sa.time ? *sa.time : s.start;
+  const bool json = sa.json;
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);
-  tree::Kvd_tree t;
-  try {
-    t = tree::build(c, Exact_time(time));
-  } catch (const tree::Build_error& e) {
-    throw Usage_error("kvd order: " + *path + ": " + e.what());
-  }
-  const Point4<mpq_class> eye{{(*view)[0], (*view)[1], (*view)[2], mpq_class(1)}};
+  const tree::Kvd_tree t = build_tree("order", *sa.path, c, Exact_time(time));
+  const Point4<mpq_class> eye{{view[0], view[1], view[2], mpq_class(1)}};
   const query::Culling culling =
       cull ? query::back_to_front_culled(c, t, time) : query::Culling{query::back_to_front(c, t, eye, time)};
   std::cout << (json ? "{\"fragments\": [" : "");

@@ -28,11 +28,10 @@ const char* const render_help =
 }  // namespace
 
 int render(Args& args) {
-  std::optional<std::string> path, out;
-  std::optional<std::array<mpq_class, 3>> view;
-  std::optional<mpq_class> time;
+  Scene_args sa;
+  sa.wants_time = sa.wants_view = true;
+  std::optional<std::string> out;
   query::Render_options o;
-  scene::Load_options options;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -40,36 +39,26 @@ int render(Args& args) {
       return 0;
     }
     if (a == "--cells") o.cells = true;
-    else if (a == "--seed") options.seed = args.unsigned_value(a);
-    else if (a == "--time") time = exact_option("render", a, args.value(a));
-    else if (a == "--view") view = point_option("render", a, args.value(a));
     else if (a == "--out") out = args.value(a);
     else if (a == "--size") {
       const std::uint64_t px = args.unsigned_value(a);
       if (px < 16 || px > 20000) throw Usage_error("kvd render: --size must be between 16 and 20000");
       o.size = static_cast<int>(px);
-    } else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
-    else args.unknown(a);
+    } else if (!sa.take(args, a)) args.unknown(a);
   }
-  if (!path) throw Usage_error("kvd render: missing the SCENE file (see kvd render --help)");
-  if (!view) throw Usage_error("kvd render: missing --view X,Y,Z");
+  const scene::Scene s = sa.load_scene("render");
+  const auto& view = sa.required_view("render");
   auto ends_with = [](const std::string& s, const char* tail) {
     const std::string t(tail);
     return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
   };
   const bool png = out && ends_with(*out, ".png");
   if (out && !png && !ends_with(*out, ".svg")) throw Usage_error("kvd render: --out must name an .svg or .png file");
-  const scene::Scene s = scene::load_scene(*path, options);
-  const mpq_class t = time ? *time : s.start;
+  const mpq_class t = sa.time ? *sa.time : s.start;
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);
-  tree::Kvd_tree tr;
-  try {
-    tr = tree::build(c, Exact_time(t));
-  } catch (const tree::Build_error& e) {
-    throw Usage_error("kvd render: " + *path + ": " + e.what());
-  }
-  const auto picture = query::paint(c, tr, {{(*view)[0], (*view)[1], (*view)[2], mpq_class(1)}}, t, o);
+  const tree::Kvd_tree tr = build_tree("render", *sa.path, c, Exact_time(t));
+  const auto picture = query::paint(c, tr, {{view[0], view[1], view[2], mpq_class(1)}}, t, o);
   if (out) write_atomically("render", *out, png ? query::to_png(picture, o) : query::to_svg(picture, o));
   else std::cout << query::to_svg(picture, o);
   return 0;
