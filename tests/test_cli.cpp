@@ -104,3 +104,12 @@ TEST_CASE("kvd order and kvd render describe and paint every fragment", "[cli][o
   CHECK(run("build " + scene + " --kernel mpfr:x").status == 2);
   CHECK(run("build " + scene + " --time 1/0").status == 2);
 }
+
+TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulate]") {
+  const Run r = run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --json");
+  CHECK(r.status == 0);
+  CHECK(r.out.find("{\"time\": \"2\", \"approx\": \"2\", \"failing\": 1") != std::string::npos);
+  CHECK(r.out.find("\"valid\": true}") != std::string::npos);
+  CHECK(run("simulate").status == 2);
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --events x").status == 2);
+}

@@ -52,6 +52,35 @@ Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex
 }
 
 template <class K>
+std::vector<typename K::Poly> Classifier<K>::certificate(const symbolic::Symbolic_vertex& given,
+                                                         const symbolic::Symbolic_plane& p) const {
+  const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
+  std::vector<typename K::Poly> out;
+  if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) return out;
+  const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
+  auto keep = [&](const typename K::Poly& q) {
+    if (q.degree() >= 1) out.push_back(q);
+  };
+  const Point4<typename K::Poly>& x = point_poly(v);
+  const typename K::Poly f = dot(plane_poly(p), x);
+  if (!f.is_zero()) {
+    keep(f);
+    if (derived) keep(x[3]);
+    return out;
+  }
+  const auto xe = perturbed().point(v);
+  const auto fe = dot(perturbed().plane(p), xe);
+  auto first_nonzero = [](const Poly<typename K::Poly>& e) {
+    for (const auto& c : e.coefficients())
+      if (!c.is_zero()) return c;
+    return typename K::Poly();
+  };
+  keep(first_nonzero(fe));
+  if (derived) keep(first_nonzero(xe[3]));
+  return out;
+}
+
+template <class K>
 Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, const symbolic::Symbolic_plane& p,
                                        const typename K::Time& t) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);

@@ -87,5 +87,6 @@ int generate(Args& args);
 int build(Args& args);
 int order(Args& args);
 int render(Args& args);
+int simulate(Args& args);
 
 }  // namespace kvd::cli

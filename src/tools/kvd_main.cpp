@@ -20,7 +20,8 @@ const char* const usage =
     "  generate FAM   write a generated scene (the thesis's data sets and more)\n"
     "  build SCENE    build the KVD at an instant and print its statistics\n"
     "  order SCENE    list triangle fragments back to front from a viewpoint\n"
-    "  render SCENE   paint the decomposition from a viewpoint (SVG)\n"
+    "  render SCENE   paint the decomposition from a viewpoint (SVG or PNG)\n"
+    "  simulate SCENE run the kinetic KVD (full certificates, exact events)\n"
     "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
     if (command == "build") return kvd::cli::build(args);
     if (command == "order") return kvd::cli::order(args);
     if (command == "render") return kvd::cli::render(args);
+    if (command == "simulate") return kvd::cli::simulate(args);
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {

@@ -15,8 +15,8 @@ using SV = Symbolic_vertex;
 template <class K>
 class Builder {
 public:
-  Builder(const predicates::Classifier<K>& c, const typename K::Time& t)
-      : c_(c), t_(t), s_(c.motion().scene()) {}
+  Builder(const predicates::Classifier<K>& c, const typename K::Time& t, Evaluated* evaluated)
+      : c_(c), t_(t), s_(c.motion().scene()), evaluated_(evaluated) {}
 
   Kvd_tree run() {
     for (std::size_t t : s_.priority_order) {
@@ -69,7 +69,10 @@ private:
 
   Node& node(int i) { return tree_.nodes[static_cast<std::size_t>(i)]; }
 
-  int side(const SV& v, const SP& p) const { return c_.side(v, p, t_); }
+  int side(const SV& v, const SP& p) const {
+    if (evaluated_) evaluated_->emplace_back(v, p);
+    return c_.side(v, p, t_);
+  }
 
   // The vertex where `edge` crosses `plane`.
   SV crossing(const SE& edge, const SP& plane) const {
@@ -174,16 +177,18 @@ private:
   const typename K::Time& t_;
   const scene::Scene& s_;
   Kvd_tree tree_;
+  Evaluated* evaluated_;
 };
 
 }  // namespace
 
 template <class K>
-Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t) {
-  return Builder<K>(classifier, t).run();
+Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t, Evaluated* evaluated) {
+  return Builder<K>(classifier, t, evaluated).run();
 }
 
-#define KVD_INSTANTIATE_BUILD(K) template Kvd_tree build<K>(const predicates::Classifier<K>&, const typename K::Time&);
+#define KVD_INSTANTIATE_BUILD(K) \
+  template Kvd_tree build<K>(const predicates::Classifier<K>&, const typename K::Time&, Evaluated*);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_BUILD)
 
 }  // namespace kvd::tree

@@ -44,6 +44,11 @@ public:
   }
 
   const K& kernel() const { return *k_; }
+  // The polynomials in t whose sign changes are the only times classify(v, p)
+  // can change: the value (or, under rule 4, the first ε-coefficient that is
+  // not identically zero) and the W of a derived vertex; constants left out.
+  // Empty for an incidence by construction.
+  std::vector<typename K::Poly> certificate(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
   // The position of v in the perturbed scene as ε -> 0+: its motion point,
   // or, where that vanishes identically (v built from planes that coincide

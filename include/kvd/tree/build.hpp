@@ -7,6 +7,8 @@
 #pragma once
 
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "kvd/predicates/classify.hpp"
 #include "kvd/scene/scene.hpp"
@@ -21,8 +23,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-// The tree valid on (t, t + δ).
+// Every classification a construction evaluated, in order: the construction
+// branches only on these signs, so while none of them changes, neither does
+// the tree (DESIGN.md section 5, the "full" certificate set).
+using Evaluated = std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>>;
+
+// The tree valid on (t, t + δ); with `evaluated`, also the classifications
+// it made.
 template <class K>
-Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t);
+Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t, Evaluated* evaluated = nullptr);
 
 }  // namespace kvd::tree
