@@ -9,18 +9,23 @@ namespace kvd::cli {
 
 namespace {
 const char* const simulate_help =
-    "usage: kvd simulate SCENE [--events N] [--no-validate] [--seed S] [--json]\n"
+    "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S] [--json]\n"
     "\n"
     "Runs the kinetic KVD from the scene's start, with the exact kernel, the\n"
     "full certificate set (every sign the construction evaluated) and the\n"
     "reference update (rebuild just after each event), until the scene's end,\n"
-    "the last event, or N events (default 100). Events at the same algebraic\n"
-    "time are one batch. After every event the tree in force before it is\n"
-    "compared with a fresh build at a rational time strictly between the two\n"
-    "events; a difference (a missed event) is a failed check.\n"
+    "the last event, the batch holding the N-th certificate failure (default\n"
+    "100), or the last batch at a time <= T. Failures at the same algebraic\n"
+    "time are one batch. With --validate every (the default), the tree in force\n"
+    "between two batches is compared with a fresh build at a rational time\n"
+    "strictly between them (a difference is a missed event: a failed check);\n"
+    "with end, only before the last batch. Triangles that meet (a collision)\n"
+    "stop the simulation with a message and status 0.\n"
     "\n"
-    "  --json   {\"events\": [{\"time\": EXACT, \"approx\": DECIMAL, \"failing\": N,\n"
-    "           \"certificates\": N, \"changed\": BOOL}, ...], \"valid\": BOOL}\n"
+    "  --json   {\"batches\": [{\"time\": EXACT, \"approx\": DECIMAL, \"failing\": N,\n"
+    "           \"certificates\": N, \"changed\": BOOL}, ...], \"events\": N,\n"
+    "           \"simultaneous_batches\": N, \"collisions\": N, \"validation_failures\": N,\n"
+    "           \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT, \"structure_hash\": HEX}\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation, 2 on bad input.\n";
 
@@ -41,12 +46,19 @@ int simulate(Args& args) {
       return 0;
     }
     if (a == "--events") o.max_events = args.unsigned_value(a);
-    else if (a == "--no-validate") o.validate = false;
+    else if (a == "--until") o.until = exact_option("simulate", a, args.value(a));
+    else if (a == "--validate") {
+      const std::string& v = args.value(a);
+      if (v == "every") o.validate = kinetic::Validation::every;
+      else if (v == "end") o.validate = kinetic::Validation::end;
+      else if (v == "none") o.validate = kinetic::Validation::none;
+      else throw Usage_error("kvd simulate: --validate expects every, end or none");
+    }
     else if (!sa.take(args, a)) args.unknown(a);
   }
   const scene::Scene s = sa.load_scene("simulate");
   const kinetic::Full_simulation sim = kinetic::simulate_full(s, o);
-  if (sa.json) std::cout << "{\"events\": [";
+  if (sa.json) std::cout << "{\"batches\": [";
   for (std::size_t i = 0; i < sim.events.size(); ++i) {
     const auto& e = sim.events[i];
     if (sa.json)
@@ -58,8 +70,18 @@ int simulate(Args& args) {
                 << "): " << e.failing << " of " << e.certificates << " certificates fail, tree "
                 << (e.changed ? "changed" : "unchanged") << "\n";
   }
-  if (sa.json) std::cout << "], \"valid\": " << (sim.valid ? "true" : "false") << "}\n";
-  if (!sim.valid) {
+  if (sa.json)
+    std::cout << "], \"events\": " << sim.failures << ", \"simultaneous_batches\": " << sim.simultaneous_batches
+              << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
+              << ", \"time_reached\": " << json_string(approx(sim.time_reached.to_double()))
+              << ", \"time_reached_exact\": " << json_string(sim.time_reached.to_string())
+              << ", \"structure_hash\": " << json_string(sim.structure_hash) << "}\n";
+  else
+    std::cout << sim.failures << " certificate failures in " << sim.events.size() << " batches ("
+              << sim.simultaneous_batches << " simultaneous), time reached " << approx(sim.time_reached.to_double())
+              << ", structure " << sim.structure_hash << "\n";
+  if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
+  if (!sim.valid()) {
     std::cerr << "kvd simulate: validation failed: " << sim.failure << "\n";
     return 1;
   }

@@ -23,24 +23,34 @@ namespace kvd::kinetic {
 
 struct Full_event {
   Exact_time time;
-  std::size_t failing = 0;       // certificates (distinct polynomials) failing at this time
-  std::size_t certificates = 0;  // distinct certificate polynomials before the event
+  std::size_t failing = 0;       // certificates failing at this time
+  std::size_t certificates = 0;  // certificates (non-incident classifications) before the event
   bool changed = false;          // whether the tree just after differs from the tree before
 };
 
 struct Full_simulation {
-  std::vector<Full_event> events;
-  bool valid = true;
+  std::vector<Full_event> events;  // one per batch
+  std::size_t failures = 0;        // certificate failures processed (the "events")
+  std::size_t simultaneous_batches = 0;
+  Exact_time time_reached;
+  std::string structure_hash;   // of the tree in force at the end
+  std::optional<std::string> collision;  // triangles meeting: the simulation stops there
+  std::size_t validation_failures = 0;
   std::string failure;  // the first validation failure, in words
+  bool valid() const { return validation_failures == 0; }
 };
+
+enum class Validation { every, end, none };
 
 struct Full_options {
-  std::size_t max_events = 100;
-  bool validate = true;
+  std::size_t max_events = 100;            // stop after the batch holding the N-th failure
+  std::optional<mpq_class> until;          // process every batch at a time <= until
+  Validation validate = Validation::every;  // between every two batches, or only the last
 };
 
-// Runs from the scene's start until its end (if any), no events are left,
-// or max_events.
+// Runs from the scene's start until its end or `until`, no events are left,
+// max_events, or a collision (a fragment crossing a triangle's plane when the
+// tree is rebuilt: the triangles meet).
 Full_simulation simulate_full(const scene::Scene& s, const Full_options& options);
 
 // A rational strictly between a < b.
