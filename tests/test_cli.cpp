@@ -118,6 +118,18 @@ TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulat
   CHECK(r.out.find("\"collisions\": 0, \"validation_failures\": 0") != std::string::npos);
   CHECK(r.out.find("\"time_reached_exact\": \"4\"") != std::string::npos);
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --validate sometimes").status == 2);
+  // The trace: one JSON line per failure; the first is the mover's vertex v4
+  // = (1,0,1) crossing the E-plane of the floor edge e1 from (4,-4) to (0,4).
+  const std::string trace = std::string(KVD_BINARY_DIR) + "/two-triangles.jsonl";
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --trace " + trace).status == 0);
+  std::FILE* f = std::fopen(trace.c_str(), "r");
+  REQUIRE(f != nullptr);
+  std::array<char, 512> line{};
+  REQUIRE(std::fgets(line.data(), line.size(), f) != nullptr);
+  std::fclose(f);
+  CHECK(std::string(line.data()) ==
+        "{\"batch\": 0, \"time\": \"2\", \"interval\": [\"2\", \"2\"], \"approx\": \"2\", "
+        "\"certificate\": \"endpoint/E\", \"vertex\": \"SV(v4)\", \"plane\": \"E(1)\"}\n");
   CHECK(run("simulate").status == 2);
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --events x").status == 2);
 }

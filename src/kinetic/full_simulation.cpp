@@ -43,8 +43,8 @@ Full_simulation simulate_full(const scene::Scene& s, const Full_options& options
   // Next roots are cached per distinct polynomial (its coefficients).
   std::map<std::vector<mpq_class>, std::optional<Exact_time>> next_root;
   while (sim.failures < options.max_events) {
-    // Distinct polynomials, each with the number of certificates that have it.
-    std::map<std::vector<mpq_class>, std::pair<Poly<mpq_class>, std::size_t>> polys;
+    // Distinct polynomials, each with the certificates that have it.
+    std::map<std::vector<mpq_class>, std::pair<Poly<mpq_class>, tree::Evaluated>> polys;
     // A classification evaluated for several fragments is one certificate.
     std::sort(evaluated.begin(), evaluated.end());
     evaluated.erase(std::unique(evaluated.begin(), evaluated.end()), evaluated.end());
@@ -52,20 +52,20 @@ Full_simulation simulate_full(const scene::Scene& s, const Full_options& options
     for (const auto& [v, p] : evaluated) {
       const auto qs = c.certificate(v, p);
       certificates += !qs.empty();
-      for (auto& q : qs) ++polys.try_emplace(q.coefficients(), q, 0).first->second.second;
+      for (auto& q : qs) polys.try_emplace(q.coefficients(), q, tree::Evaluated{}).first->second.second.emplace_back(v, p);
     }
     std::optional<Exact_time> first;
-    std::size_t failing = 0;
+    tree::Evaluated failing;
     for (const auto& [key, entry] : polys) {
-      const auto& [q, count] = entry;
+      const auto& [q, owners] = entry;
       auto it = next_root.find(key);
       if (it == next_root.end() || (it->second && k.compare(*it->second, now) <= 0))
         it = next_root.insert_or_assign(key, k.next_root(q, now)).first;
       const auto& r = it->second;
       if (!r) continue;
       const int cmp = first ? k.compare(*r, *first) : -1;
-      if (cmp < 0) first = *r, failing = count;
-      else if (cmp == 0) failing += count;
+      if (cmp < 0) first = *r, failing = owners;
+      else if (cmp == 0) failing.insert(failing.end(), owners.begin(), owners.end());
     }
     if (!first || (limit && k.compare(*first, *limit) > 0)) break;
     if (options.validate == Validation::every) validate(now, *first, current);
@@ -79,9 +79,13 @@ Full_simulation simulate_full(const scene::Scene& s, const Full_options& options
       now = *first;
       break;
     }
-    sim.events.push_back({*first, failing, certificates, tree::first_difference(current, next).has_value()});
-    sim.failures += failing;
-    sim.simultaneous_batches += failing >= 2;
+    // A certificate with two polynomials failing together counts once.
+    std::sort(failing.begin(), failing.end());
+    failing.erase(std::unique(failing.begin(), failing.end()), failing.end());
+    sim.failures += failing.size();
+    sim.simultaneous_batches += failing.size() >= 2;
+    const std::size_t count = failing.size();
+    sim.events.push_back({*first, std::move(failing), count, certificates, tree::first_difference(current, next).has_value()});
     current = std::move(next);
     now = *first;
   }

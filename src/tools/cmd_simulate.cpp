@@ -9,7 +9,8 @@ namespace kvd::cli {
 
 namespace {
 const char* const simulate_help =
-    "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S] [--json]\n"
+    "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
+    "                    [--trace FILE] [--json]\n"
     "\n"
     "Runs the kinetic KVD from the scene's start, with the exact kernel, the\n"
     "full certificate set (every sign the construction evaluated) and the\n"
@@ -22,6 +23,7 @@ const char* const simulate_help =
     "with end, only before the last batch. Triangles that meet (a collision)\n"
     "stop the simulation with a message and status 0.\n"
     "\n"
+    "  --trace FILE   one JSON line per certificate failure (format in the README)\n"
     "  --json   {\"batches\": [{\"time\": EXACT, \"approx\": DECIMAL, \"failing\": N,\n"
     "           \"certificates\": N, \"changed\": BOOL}, ...], \"events\": N,\n"
     "           \"simultaneous_batches\": N, \"collisions\": N, \"validation_failures\": N,\n"
@@ -34,11 +36,43 @@ std::string approx(double d) {
   std::snprintf(buf, sizeof buf, "%.17g", d);
   return buf;
 }
+const char* kind_name(symbolic::Symbolic_vertex::Kind k) {
+  using K = symbolic::Symbolic_vertex::Kind;
+  switch (k) {
+    case K::endpoint: return "endpoint";
+    case K::intersection: return "intersection";
+    case K::thread: return "thread";
+    case K::internal_intersection: return "internal-intersection";
+    case K::internal_thread: return "internal-thread";
+    case K::axis: return "axis";
+  }
+  return "?";
+}
+
+// JSON Lines, one per certificate failure, in batch order.
+std::string trace_lines(const kinetic::Full_simulation& sim) {
+  std::string out;
+  for (std::size_t b = 0; b < sim.events.size(); ++b) {
+    const auto& e = sim.events[b];
+    const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(e.time.to_string()) +
+                             ", \"interval\": [" + json_string(e.time.lower().get_str()) + ", " +
+                             json_string(e.time.upper().get_str()) + "], \"approx\": " + json_string(approx(e.time.to_double()));
+    for (const auto& [v, p] : e.failing_certificates) {
+      const char* plane = p.kind == symbolic::Symbolic_plane::Kind::P ? "P" : p.kind == symbolic::Symbolic_plane::Kind::E ? "E" : "T";
+      out += head + ", \"certificate\": " + json_string(std::string(kind_name(v.kind)) + "/" + plane) +
+             ", \"vertex\": " + json_string(symbolic::to_string(v)) + ", \"plane\": " + json_string(symbolic::to_string(p)) +
+             "}\n";
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 int simulate(Args& args) {
   Scene_args sa;
   kinetic::Full_options o;
+  std::optional<std::string> trace;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -46,6 +80,7 @@ int simulate(Args& args) {
       return 0;
     }
     if (a == "--events") o.max_events = args.unsigned_value(a);
+    else if (a == "--trace") trace = args.value(a);
     else if (a == "--until") o.until = exact_option("simulate", a, args.value(a));
     else if (a == "--validate") {
       const std::string& v = args.value(a);
@@ -58,6 +93,7 @@ int simulate(Args& args) {
   }
   const scene::Scene s = sa.load_scene("simulate");
   const kinetic::Full_simulation sim = kinetic::simulate_full(s, o);
+  if (trace) write_atomically("simulate", *trace, trace_lines(sim));
   if (sa.json) std::cout << "{\"batches\": [";
   for (std::size_t i = 0; i < sim.events.size(); ++i) {
     const auto& e = sim.events[i];

@@ -14,15 +14,19 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/scene/scene.hpp"
+#include "kvd/symbolic/symbolic.hpp"
 
 namespace kvd::kinetic {
 
 struct Full_event {
   Exact_time time;
+  // The certificates failing: classifications of a symbolic vertex against a symbolic plane.
+  std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>> failing_certificates;
   std::size_t failing = 0;       // certificates failing at this time
   std::size_t certificates = 0;  // certificates (non-incident classifications) before the event
   bool changed = false;          // whether the tree just after differs from the tree before
