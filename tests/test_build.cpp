@@ -54,6 +54,29 @@ TEST_CASE("a single triangle gives the hand-checked tree", "[build]") {
   CHECK(tree::structure_hash(t) == "ee01ccff09824c143347fbe23e841fb9d4b65ae6c2168339ca4d0a5f770f6f48");
 }
 
+TEST_CASE("the single triangle with reversed orientation gives the hand-checked tree", "[build]") {
+  // Triangle (0, 2, 1): P-cuts in the order P(0), P(2), P(1); edges e0 = (0,2),
+  // e1 = (2,1), e2 = (1,0) with E-planes y - 3x, 2x + 3y - 11 and x - 4y
+  // (positive as written). P(1), y = 1, cuts e0 at X = SV(e0,P1) =
+  // (1/3, 1, 1/3) and the triangle along SE(P1,T0); v1 = (4,1,0) is on the
+  // negative side of E(0) (-11), X on the negative sides of E(2) (-11/3) and
+  // E(1) (-22/3).
+  const std::string expected =
+      "P(0) [SV(v0)]\n"
+      "  + P(2) [SV(v2)]\n"
+      "    - P(1) [SV(v1)]\n"
+      "      - E(0) [SV(v0) SV(e0,P1) SE(e0)]\n"
+      "        - E(2) [SV(v1) SV(v0) SE(e2)]\n"
+      "          - T(0) [SV(v0) SE(e0), SV(e0,P1) SE(P1,T0), SV(v1) SE(e2)]\n"
+      "      + E(0) [SV(e0,P1) SV(v2) SE(e0)]\n"
+      "        - E(1) [SV(v2) SV(v1) SE(e1)]\n"
+      "          - T(0) [SV(e0,P1) SE(e0), SV(v2) SE(e1), SV(v1) SE(P1,T0)]\n";
+  const scene::Scene s = scene::read_scene(R"({"format": "kvd-scene/1", "objects": [
+      {"vertices": [[0,0,0],[4,1,0],[1,3,1]], "triangles": [[0,2,1]]}]})",
+                                           "reversed.json");
+  CHECK(build_at(kvd::Exact_kernel(), s, 0).describe() == expected);
+}
+
 TEST_CASE("two triangles in separate P-slabs give the hand-checked tree", "[build]") {
   // The copy (vertices 3-5) has y >= 10 > 3: every one of its cuts passes
   // P(0), P(1), P(2) on the positive side, and below P(2) it builds the
