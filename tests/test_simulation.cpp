@@ -2,6 +2,9 @@
 // batching of simultaneous events, and validation against fresh builds
 // between events.
 #include <catch2/catch.hpp>
+#include <cmath>
+
+#include "kvd/kernel/kernel.hpp"
 
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kinetic/full_simulation.hpp"
@@ -14,7 +17,7 @@ namespace {
 scene::Scene load(const char* name) { return scene::load_scene(std::string(KVD_SOURCE_DIR) + "/data/" + name); }
 const Exact_kernel k;
 
-void check_increasing_and_valid(const kinetic::Full_simulation& sim) {
+void check_increasing_and_valid(const kinetic::Full_simulation<Exact_time>& sim) {
   CHECK(sim.valid());
   if (!sim.valid()) UNSCOPED_INFO(sim.failure);
   for (std::size_t i = 1; i < sim.events.size(); ++i) CHECK(k.compare(sim.events[i - 1].time, sim.events[i].time) < 0);
@@ -26,7 +29,7 @@ TEST_CASE("two triangles: events exactly where the mover's vertices cross the fl
   // x and cross the E-plane 2x + y = 4 of the floor edge (4,-4)-(0,4) at
   // t = 4, 2 and 3. The floor is static and of higher priority, so nothing of
   // it is ever classified against the mover's planes: no other event.
-  const auto sim = kinetic::simulate_full(load("two-triangles.json"), {});
+  const auto sim = kinetic::simulate_full(k, load("two-triangles.json"), {});
   check_increasing_and_valid(sim);
   REQUIRE(sim.events.size() == 3);
   const long expected[] = {2, 3, 4};
@@ -38,7 +41,7 @@ TEST_CASE("two triangles: events exactly where the mover's vertices cross the fl
 }
 
 TEST_CASE("rotor: simultaneous failures at one algebraic time form one batch", "[kinetic]") {
-  const auto sim = kinetic::simulate_full(load("rotor.json"), {});
+  const auto sim = kinetic::simulate_full(k, load("rotor.json"), {});
   check_increasing_and_valid(sim);
   REQUIRE(sim.events.size() >= 3);
   // The first event is sqrt(2) - 1, the positive root of t^2 + 2t - 1, given
@@ -57,7 +60,7 @@ TEST_CASE("simulations of moving scenes validate against fresh builds", "[kineti
     INFO(name);
     kinetic::Full_options o;
     o.max_events = 25;
-    const auto sim = kinetic::simulate_full(load(name), o);
+    const auto sim = kinetic::simulate_full(k, load(name), o);
     check_increasing_and_valid(sim);
     CHECK(!sim.events.empty());
   }
@@ -75,8 +78,8 @@ TEST_CASE("a rational strictly between two exact times", "[kinetic]") {
 }
 
 namespace {
-kinetic::Full_simulation run_text(const std::string& json) {
-  return kinetic::simulate_full(scene::read_scene(json, "inline.json"), {});
+kinetic::Full_simulation<Exact_time> run_text(const std::string& json) {
+  return kinetic::simulate_full(k, scene::read_scene(json, "inline.json"), {});
 }
 }  // namespace
 
@@ -143,7 +146,7 @@ TEST_CASE("random mixed scenes validate at every batch", "[kinetic][property]") 
     const scene::Scene s = scene::read_scene(scene::write_scene(scene::uniform_density(p)), "generated");
     kinetic::Full_options o;
     o.max_events = 120;
-    const auto sim = kinetic::simulate_full(s, o);
+    const auto sim = kinetic::simulate_full(k, s, o);
     INFO("seed " << seed);
     check_increasing_and_valid(sim);
     failures += sim.failures;
@@ -157,4 +160,24 @@ TEST_CASE("random mixed scenes validate at every batch", "[kinetic][property]") 
   CHECK(batches >= 100);
   CHECK(changed >= 100);
   CHECK(simultaneous >= 10);
+}
+
+TEMPLATE_TEST_CASE("the floating-point kernels reproduce the exact simulation on unstressed scenes", "[kinetic][float]",
+                   kvd::Double_kernel, kvd::Mpfr_kernel) {
+  const TestType fk;
+  for (const char* name : {"two-triangles.json", "rotor.json", "random-20.json"}) {
+    INFO(name);
+    const scene::Scene s = load(name);
+    kinetic::Full_options o;
+    o.max_events = 40;
+    const auto exact = kinetic::simulate_full(k, s, o);
+    const auto fp = kinetic::simulate_full(fk, s, o);
+    CHECK(fp.valid());
+    REQUIRE(fp.events.size() == exact.events.size());
+    for (std::size_t i = 0; i < exact.events.size(); ++i) {
+      CHECK(std::abs(fk.to_double(fp.events[i].time) - exact.events[i].time.to_double()) < 1e-9);
+      CHECK(fp.events[i].failing == exact.events[i].failing);
+    }
+    CHECK(fp.structure_hash == exact.structure_hash);
+  }
 }

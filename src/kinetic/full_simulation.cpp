@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <map>
 
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
 #include "kvd/predicates/classify.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
@@ -19,32 +22,51 @@ mpq_class rational_between(const Exact_time& a, const Exact_time& b) {
   }
 }
 
-Full_simulation simulate_full(const scene::Scene& s, const Full_options& options) {
-  const Exact_kernel k;
-  const predicates::Classifier<Exact_kernel> c(k, s);
-  Full_simulation sim;
-  Exact_time now(s.start);
+namespace {
+
+// A time strictly between a < b: a rational in the exact kernel, the
+// midpoint in the floating-point ones.
+Exact_time between(const Exact_kernel&, const Exact_time& a, const Exact_time& b) {
+  return Exact_time(rational_between(a, b));
+}
+template <class K>
+typename K::Time between(const K&, const typename K::Time& a, const typename K::Time& b) {
+  return (a + b) / typename K::FT(2);
+}
+
+}  // namespace
+
+template <class K>
+Full_simulation<typename K::Time> simulate_full(const K& k, const scene::Scene& s, const Full_options& options) {
+  using Time = typename K::Time;
+  using FT = typename K::FT;
+  const predicates::Classifier<K> c(k, s);
+  Full_simulation<Time> sim;
+  Time now = k.time(from_rational<FT>(s.start));
   tree::Evaluated evaluated;
   tree::Kvd_tree current = tree::build(c, now, &evaluated);
   // Checks the tree in force on (from, to) against a fresh build at a
   // rational time strictly between: a difference is a missed event.
-  auto validate = [&](const Exact_time& from, const Exact_time& to, const tree::Kvd_tree& in_force) {
-    const mpq_class mid = rational_between(from, to);
-    const auto diff = tree::first_difference(in_force, tree::build(c, Exact_time(mid)));
+  auto validate = [&](const Time& from, const Time& to, const tree::Kvd_tree& in_force) {
+    const Time mid = between(k, from, to);
+    const auto diff = tree::first_difference(in_force, tree::build(c, mid));
     if (!diff) return;
     if (sim.validation_failures++ == 0)
-      sim.failure = "between " + from.to_string() + " and " + to.to_string() + ", at " + mid.get_str() +
+      sim.failure = "between " + k.to_string(from) + " and " + k.to_string(to) + ", at " + k.to_string(mid) +
                     ", the tree in force differs from a fresh build: " + *diff;
   };
-  std::optional<std::pair<Exact_time, tree::Kvd_tree>> before_last;  // for Validation::end
-  std::optional<Exact_time> limit;
-  if (s.end) limit = Exact_time(*s.end);
-  if (options.until && (!limit || k.compare(Exact_time(*options.until), *limit) < 0)) limit = Exact_time(*options.until);
+  std::optional<std::pair<Time, tree::Kvd_tree>> before_last;  // for Validation::end
+  std::optional<Time> limit;
+  if (s.end) limit = k.time(from_rational<FT>(*s.end));
+  if (options.until) {
+    const Time until = k.time(from_rational<FT>(*options.until));
+    if (!limit || k.compare(until, *limit) < 0) limit = until;
+  }
   // Next roots are cached per distinct polynomial (its coefficients).
-  std::map<std::vector<mpq_class>, std::optional<Exact_time>> next_root;
+  std::map<std::vector<FT>, std::optional<Time>> next_root;
   while (sim.failures < options.max_events) {
     // Distinct polynomials, each with the certificates that have it.
-    std::map<std::vector<mpq_class>, std::pair<Poly<mpq_class>, tree::Evaluated>> polys;
+    std::map<std::vector<FT>, std::pair<typename K::Poly, tree::Evaluated>> polys;
     // A classification evaluated for several fragments is one certificate.
     std::sort(evaluated.begin(), evaluated.end());
     evaluated.erase(std::unique(evaluated.begin(), evaluated.end()), evaluated.end());
@@ -54,7 +76,7 @@ Full_simulation simulate_full(const scene::Scene& s, const Full_options& options
       certificates += !qs.empty();
       for (auto& q : qs) polys.try_emplace(q.coefficients(), q, tree::Evaluated{}).first->second.second.emplace_back(v, p);
     }
-    std::optional<Exact_time> first;
+    std::optional<Time> first;
     tree::Evaluated failing;
     for (const auto& [key, entry] : polys) {
       const auto& [q, owners] = entry;
@@ -75,7 +97,7 @@ Full_simulation simulate_full(const scene::Scene& s, const Full_options& options
     try {
       next = tree::build(c, *first, &evaluated);
     } catch (const tree::Build_error& e) {
-      sim.collision = "collision at t = " + first->to_string() + ": " + e.what();
+      sim.collision = "collision at t = " + k.to_string(*first) + ": " + e.what();
       now = *first;
       break;
     }
@@ -94,5 +116,9 @@ Full_simulation simulate_full(const scene::Scene& s, const Full_options& options
   sim.structure_hash = tree::structure_hash(current);
   return sim;
 }
+
+#define KVD_INSTANTIATE_SIMULATE(K) \
+  template Full_simulation<K::Time> simulate_full<K>(const K&, const scene::Scene&, const Full_options&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SIMULATE)
 
 }  // namespace kvd::kinetic

@@ -91,6 +91,13 @@ void write_atomically(const std::string& command, const std::string& path, const
   }
 }
 
+unsigned mpfr_bits(const std::string& command, const std::string& bits) {
+  if (bits.empty() || bits.size() > 5 || bits.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoul(bits) < 2 || std::stoul(bits) > 65536)
+    throw Usage_error("kvd " + command + ": --kernel mpfr:BITS needs BITS between 2 and 65536");
+  return static_cast<unsigned>(std::stoul(bits));
+}
+
 std::string json_string(const std::string& s) { return nlohmann::json(s).dump(); }
 
 }  // namespace kvd::cli

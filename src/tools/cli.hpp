@@ -79,6 +79,9 @@ std::array<mpq_class, 3> point_option(const std::string& command, const std::str
 // rename, so that the file is either complete or untouched.
 void write_atomically(const std::string& command, const std::string& path, const std::string& text);
 
+// BITS of a --kernel mpfr:BITS option, between 2 and 65536.
+unsigned mpfr_bits(const std::string& command, const std::string& bits);
+
 // JSON string literal for s (quotes and escapes).
 std::string json_string(const std::string& s);
 

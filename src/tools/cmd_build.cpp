@@ -103,13 +103,7 @@ int build(Args& args) {
   if (baseline) return run_bsp(s, time, sa.json);
   if (kernel == "exact") return run(Exact_kernel(), *sa.path, s, time, sa.json);
   if (kernel == "double") return run(Double_kernel(), *sa.path, s, time, sa.json);
-  if (kernel.rfind("mpfr:", 0) == 0) {
-    const std::string bits = kernel.substr(5);
-    if (bits.empty() || bits.size() > 5 || bits.find_first_not_of("0123456789") != std::string::npos ||
-        std::stoul(bits) < 2 || std::stoul(bits) > 65536)
-      throw Usage_error("kvd build: --kernel mpfr:BITS needs BITS between 2 and 65536");
-    return run(Mpfr_kernel(static_cast<unsigned>(std::stoul(bits))), *sa.path, s, time, sa.json);
-  }
+  if (kernel.rfind("mpfr:", 0) == 0) return run(Mpfr_kernel(mpfr_bits("build", kernel.substr(5))), *sa.path, s, time, sa.json);
   throw Usage_error("kvd build: unknown kernel '" + kernel + "' (exact, double or mpfr:BITS)");
 }
 

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/full_simulation.hpp"
 
 namespace kvd::cli {
@@ -10,7 +11,7 @@ namespace kvd::cli {
 namespace {
 const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
-    "                    [--trace FILE] [--json]\n"
+    "                    [--kernel exact|double|mpfr:BITS] [--trace FILE] [--json]\n"
     "\n"
     "Runs the kinetic KVD from the scene's start, with the exact kernel, the\n"
     "full certificate set (every sign the construction evaluated) and the\n"
@@ -23,6 +24,9 @@ const char* const simulate_help =
     "with end, only before the last batch. Triangles that meet (a collision)\n"
     "stop the simulation with a message and status 0.\n"
     "\n"
+    "  --kernel K     exact (default); double or mpfr:BITS group the failures\n"
+    "                 within the kernel's epsilon of the earliest (the thesis's\n"
+    "                 epsilon-minimum) and validate at midpoints\n"
     "  --trace FILE   one JSON line per certificate failure (format in the README)\n"
     "  --json   {\"batches\": [{\"time\": EXACT, \"approx\": DECIMAL, \"failing\": N,\n"
     "           \"certificates\": N, \"changed\": BOOL}, ...], \"events\": N,\n"
@@ -49,14 +53,25 @@ const char* kind_name(symbolic::Symbolic_vertex::Kind k) {
   return "?";
 }
 
+// The isolating interval of an exact time; a floating-point time is its own.
+std::pair<std::string, std::string> interval(const Exact_kernel&, const Exact_time& t) {
+  return {t.lower().get_str(), t.upper().get_str()};
+}
+template <class K>
+std::pair<std::string, std::string> interval(const K& k, const typename K::Time& t) {
+  return {k.to_string(t), k.to_string(t)};
+}
+
 // JSON Lines, one per certificate failure, in batch order.
-std::string trace_lines(const kinetic::Full_simulation& sim) {
+template <class K>
+std::string trace_lines(const K& k, const kinetic::Full_simulation<typename K::Time>& sim) {
   std::string out;
   for (std::size_t b = 0; b < sim.events.size(); ++b) {
     const auto& e = sim.events[b];
-    const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(e.time.to_string()) +
-                             ", \"interval\": [" + json_string(e.time.lower().get_str()) + ", " +
-                             json_string(e.time.upper().get_str()) + "], \"approx\": " + json_string(approx(e.time.to_double()));
+    const auto [lo, hi] = interval(k, e.time);
+    const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(k.to_string(e.time)) +
+                             ", \"interval\": [" + json_string(lo) + ", " + json_string(hi) +
+                             "], \"approx\": " + json_string(approx(k.to_double(e.time)));
     for (const auto& [v, p] : e.failing_certificates) {
       const char* plane = p.kind == symbolic::Symbolic_plane::Kind::P ? "P" : p.kind == symbolic::Symbolic_plane::Kind::E ? "E" : "T";
       out += head + ", \"certificate\": " + json_string(std::string(kind_name(v.kind)) + "/" + plane) +
@@ -67,12 +82,48 @@ std::string trace_lines(const kinetic::Full_simulation& sim) {
   return out;
 }
 
+template <class K>
+int report(const K& k, const scene::Scene& s, const kinetic::Full_options& o, const std::optional<std::string>& trace,
+           bool json) {
+  const auto sim = kinetic::simulate_full(k, s, o);
+  if (trace) write_atomically("simulate", *trace, trace_lines(k, sim));
+  if (json) std::cout << "{\"kernel\": " << json_string(K::name) << ", \"batches\": [";
+  for (std::size_t i = 0; i < sim.events.size(); ++i) {
+    const auto& e = sim.events[i];
+    if (json)
+      std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
+                << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failing
+                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
+    else
+      std::cout << "event " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
+                << "): " << e.failing << " of " << e.certificates << " certificates fail, tree "
+                << (e.changed ? "changed" : "unchanged") << "\n";
+  }
+  if (json)
+    std::cout << "], \"events\": " << sim.failures << ", \"simultaneous_batches\": " << sim.simultaneous_batches
+              << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
+              << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
+              << ", \"time_reached_exact\": " << json_string(k.to_string(sim.time_reached))
+              << ", \"structure_hash\": " << json_string(sim.structure_hash) << "}\n";
+  else
+    std::cout << sim.failures << " certificate failures in " << sim.events.size() << " batches ("
+              << sim.simultaneous_batches << " simultaneous), time reached " << approx(k.to_double(sim.time_reached))
+              << ", structure " << sim.structure_hash << "\n";
+  if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
+  if (!sim.valid()) {
+    std::cerr << "kvd simulate: validation failed: " << sim.failure << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int simulate(Args& args) {
   Scene_args sa;
   kinetic::Full_options o;
   std::optional<std::string> trace;
+  std::string kernel = "exact";
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -80,6 +131,7 @@ int simulate(Args& args) {
       return 0;
     }
     if (a == "--events") o.max_events = args.unsigned_value(a);
+    else if (a == "--kernel") kernel = args.value(a);
     else if (a == "--trace") trace = args.value(a);
     else if (a == "--until") o.until = exact_option("simulate", a, args.value(a));
     else if (a == "--validate") {
@@ -88,40 +140,13 @@ int simulate(Args& args) {
       else if (v == "end") o.validate = kinetic::Validation::end;
       else if (v == "none") o.validate = kinetic::Validation::none;
       else throw Usage_error("kvd simulate: --validate expects every, end or none");
-    }
-    else if (!sa.take(args, a)) args.unknown(a);
+    } else if (!sa.take(args, a)) args.unknown(a);
   }
   const scene::Scene s = sa.load_scene("simulate");
-  const kinetic::Full_simulation sim = kinetic::simulate_full(s, o);
-  if (trace) write_atomically("simulate", *trace, trace_lines(sim));
-  if (sa.json) std::cout << "{\"batches\": [";
-  for (std::size_t i = 0; i < sim.events.size(); ++i) {
-    const auto& e = sim.events[i];
-    if (sa.json)
-      std::cout << (i ? ", " : "") << "{\"time\": " << json_string(e.time.to_string())
-                << ", \"approx\": " << json_string(approx(e.time.to_double())) << ", \"failing\": " << e.failing
-                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
-    else
-      std::cout << "event " << i + 1 << " at t = " << approx(e.time.to_double()) << " (" << e.time.to_string()
-                << "): " << e.failing << " of " << e.certificates << " certificates fail, tree "
-                << (e.changed ? "changed" : "unchanged") << "\n";
-  }
-  if (sa.json)
-    std::cout << "], \"events\": " << sim.failures << ", \"simultaneous_batches\": " << sim.simultaneous_batches
-              << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
-              << ", \"time_reached\": " << json_string(approx(sim.time_reached.to_double()))
-              << ", \"time_reached_exact\": " << json_string(sim.time_reached.to_string())
-              << ", \"structure_hash\": " << json_string(sim.structure_hash) << "}\n";
-  else
-    std::cout << sim.failures << " certificate failures in " << sim.events.size() << " batches ("
-              << sim.simultaneous_batches << " simultaneous), time reached " << approx(sim.time_reached.to_double())
-              << ", structure " << sim.structure_hash << "\n";
-  if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
-  if (!sim.valid()) {
-    std::cerr << "kvd simulate: validation failed: " << sim.failure << "\n";
-    return 1;
-  }
-  return 0;
+  if (kernel == "exact") return report(Exact_kernel(), s, o, trace, sa.json);
+  if (kernel == "double") return report(Double_kernel(), s, o, trace, sa.json);
+  if (kernel.rfind("mpfr:", 0) == 0) return report(Mpfr_kernel(mpfr_bits("simulate", kernel.substr(5))), s, o, trace, sa.json);
+  throw Usage_error("kvd simulate: unknown kernel '" + kernel + "' (exact, double or mpfr:BITS)");
 }
 
 }  // namespace kvd::cli
