@@ -110,6 +110,7 @@ Full_simulation<typename K::Time> simulate_full(const K& k, const scene::Scene& 
     sim.events.push_back({*first, std::move(failing), count, certificates, tree::first_difference(current, next).has_value()});
     current = std::move(next);
     now = *first;
+    if (options.progress) options.progress(sim.events.size(), sim.failures);
   }
   if (options.validate == Validation::end && before_last) validate(before_last->first, now, before_last->second);
   sim.time_reached = now;

@@ -22,7 +22,8 @@ const char* const simulate_help =
     "between two batches is compared with a fresh build at a rational time\n"
     "strictly between them (a difference is a missed event: a failed check);\n"
     "with end, only before the last batch. Triangles that meet (a collision)\n"
-    "stop the simulation with a message and status 0.\n"
+    "stop the simulation with a message and status 0. Progress goes to stderr\n"
+    "every 100 batches.\n"
     "\n"
     "  --kernel K     exact (default); double or mpfr:BITS group the failures\n"
     "                 within the kernel's epsilon of the earliest (the thesis's\n"
@@ -143,6 +144,9 @@ int simulate(Args& args) {
     } else if (!sa.take(args, a)) args.unknown(a);
   }
   const scene::Scene s = sa.load_scene("simulate");
+  o.progress = [](std::size_t batches, std::size_t failures) {
+    if (batches % 100 == 0) std::cerr << "kvd simulate: " << batches << " batches, " << failures << " failures\n";
+  };
   if (kernel == "exact") return report(Exact_kernel(), s, o, trace, sa.json);
   if (kernel == "double") return report(Double_kernel(), s, o, trace, sa.json);
   if (kernel.rfind("mpfr:", 0) == 0) return report(Mpfr_kernel(mpfr_bits("simulate", kernel.substr(5))), s, o, trace, sa.json);

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -57,6 +58,8 @@ struct Full_options {
   std::size_t max_events = 100;             // stop after the batch holding the N-th failure
   std::optional<mpq_class> until;           // process every batch at a time <= until
   Validation validate = Validation::every;  // between every two batches, or only the last
+  // Called after every batch with the number of batches and of failures so far.
+  std::function<void(std::size_t batches, std::size_t failures)> progress;
 };
 
 // Runs from the scene's start until its end or `until`, no events are left,
