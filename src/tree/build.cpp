@@ -57,7 +57,7 @@ private:
         return;
       }
       const SP plane = node(at).cut;
-      auto [neg, pos] = split(f, plane);
+      auto [neg, pos] = split(f, plane, cut);
       if (neg && pos) {
         insert_below(at, false, cut, std::move(*neg));
         parent = at, right = true, f = std::move(*pos);
@@ -94,8 +94,9 @@ private:
 
   using Piece = std::optional<Fragment>;
 
-  // The parts of f on the negative and the positive side of the plane.
-  std::pair<Piece, Piece> split(const Fragment& f, const SP& plane) const {
+  // The parts of f, a fragment of `cut`, on the negative and the positive
+  // side of the plane.
+  std::pair<Piece, Piece> split(const Fragment& f, const SP& plane, const SP& cut) const {
     if (const auto* v = std::get_if<SV>(&f)) {
       // A point on the plane can only be one that lies there by construction
       // and never happens in priority order; it goes to the positive side.
@@ -120,15 +121,16 @@ private:
     }
     if (!any_pos) return {f, std::nullopt};
     if (!any_neg) return {std::nullopt, f};
-    const SE cut_line{plane.kind == SP::Kind::P ? SE::Kind::pt : SE::Kind::et, plane.id, 0};
-    return {clip(t, s, -1, cut_line), clip(t, s, +1, cut_line)};
+    // A triangle fragment travels with its own T-cut: cut.id is its triangle.
+    const SE cut_line{plane.kind == SP::Kind::P ? SE::Kind::pt : SE::Kind::et, plane.id, cut.id};
+    return {clip(t, s, -1, plane, cut_line), clip(t, s, +1, plane, cut_line)};
   }
 
   // The part of a crossed triangle fragment on side `keep` (corners keep
   // their order; new corners where sides cross, joined by the cut line).
-  Triangle_fragment clip(const Triangle_fragment& t, const std::vector<int>& s, int keep, SE cut_line) const {
-    const std::size_t triangle = triangle_of(t);
-    cut_line.b = triangle;
+  // Internal sides already name their triangle, as cut_line does.
+  Triangle_fragment clip(const Triangle_fragment& t, const std::vector<int>& s, int keep, const SP& plane,
+                         const SE& cut_line) const {
     Triangle_fragment out;
     const std::size_t n = t.corners.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -138,39 +140,15 @@ private:
         out.corners.push_back(t.corners[i]);
         out.sides.push_back(sj < 0 ? (si > 0 ? t.sides[i] : cut_line) : t.sides[i]);
         if (si > 0 && sj < 0) {
-          out.corners.push_back(crossing(with_triangle(t.sides[i], triangle), plane_of(cut_line)));
+          out.corners.push_back(crossing(t.sides[i], plane));
           out.sides.push_back(cut_line);
         }
       } else if (sj > 0) {
-        out.corners.push_back(crossing(with_triangle(t.sides[i], triangle), plane_of(cut_line)));
+        out.corners.push_back(crossing(t.sides[i], plane));
         out.sides.push_back(t.sides[i]);
       }
     }
     return out;
-  }
-
-  static SP plane_of(const SE& cut_line) {
-    return {cut_line.kind == SE::Kind::pt ? SP::Kind::P : SP::Kind::E, cut_line.a};
-  }
-  // Internal sides carry their triangle; scene edges do not need it.
-  static SE with_triangle(SE side, std::size_t triangle) {
-    if (side.kind != SE::Kind::edge) side.b = triangle;
-    return side;
-  }
-  // The triangle a fragment belongs to: the one whose edges its scene-edge
-  // sides are, or the one named by an internal side.
-  std::size_t triangle_of(const Triangle_fragment& t) const {
-    for (const auto& side : t.sides)
-      if (side.kind != SE::Kind::edge) return side.b;
-    // Only scene edges: the fragment is the whole triangle.
-    const auto& tris = s_.edge_triangles[t.sides[0].a];
-    for (std::size_t cand : tris) {
-      const auto& te = s_.triangle_edges[cand];
-      bool all = true;
-      for (const auto& side : t.sides) all = all && (side.a == te[0] || side.a == te[1] || side.a == te[2]);
-      if (all) return cand;
-    }
-    throw Build_error("a triangle fragment that belongs to no triangle");
   }
 
   const predicates::Classifier<K>& c_;
