@@ -52,31 +52,40 @@ Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex
 }
 
 template <class K>
-std::vector<typename K::Poly> Classifier<K>::certificate(const symbolic::Symbolic_vertex& given,
+typename Classifier<K>::Deciding Classifier<K>::deciding(const symbolic::Symbolic_vertex& v,
                                                          const symbolic::Symbolic_plane& p) const {
-  const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
-  std::vector<typename K::Poly> out;
-  if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) return out;
-  const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
-  auto keep = [&](const typename K::Poly& q) {
-    if (q.degree() >= 1) out.push_back(q);
-  };
-  const Point4<typename K::Poly>& x = point_poly(v);
-  const typename K::Poly f = dot(plane_poly(p), x);
-  if (!f.is_zero()) {
-    keep(f);
-    if (derived) keep(x[3]);
-    return out;
+  Deciding d;
+  if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) {
+    d.incident = true;
+    return d;
   }
-  const auto xe = perturbed().point(v);
-  const auto fe = dot(perturbed().plane(p), xe);
+  const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
+  const Point4<typename K::Poly>& x = point_poly(v);
+  d.value = dot(plane_poly(p), x);
+  if (!d.value.is_zero()) {
+    if (derived) d.w = x[3];
+    return d;
+  }
+  // Rule 4: expand in ε; coefficients are polynomials in t.
+  d.perturbed = true;
   auto first_nonzero = [](const Poly<typename K::Poly>& e) {
     for (const auto& c : e.coefficients())
       if (!c.is_zero()) return c;
     return typename K::Poly();
   };
-  keep(first_nonzero(fe));
-  if (derived) keep(first_nonzero(xe[3]));
+  const auto xe = perturbed().point(v);
+  d.value = first_nonzero(dot(perturbed().plane(p), xe));
+  if (derived) d.w = first_nonzero(xe[3]);
+  return d;
+}
+
+template <class K>
+std::vector<typename K::Poly> Classifier<K>::certificate(const symbolic::Symbolic_vertex& given,
+                                                         const symbolic::Symbolic_plane& p) const {
+  const Deciding d = deciding(symbolic::canonical(motion_.scene(), given), p);
+  std::vector<typename K::Poly> out;
+  for (const auto* q : {&d.value, &d.w})
+    if (q->degree() >= 1) out.push_back(*q);
   return out;
 }
 
@@ -84,31 +93,18 @@ template <class K>
 Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, const symbolic::Symbolic_plane& p,
                                        const typename K::Time& t) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
-  if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) return {0, Rule::incidence};
-  const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
-  const Point4<typename K::Poly>& x = point_poly(v);
-  const typename K::Poly f = dot(plane_poly(p), x);
-  if (!f.is_zero()) {
-    // A direction (W identically zero) counts as W > 0, as in kvd::side.
-    const int w = derived && !x[3].is_zero() ? lex_sign(x[3], t) : 1;
-    const int s = k_->sign_at(f, t);
-    if (s != 0) return {s * w, Rule::value};
-    return {k_->sign_after(f, t) * w, Rule::after};
+  const Deciding d = deciding(v, p);
+  if (d.incident) return {0, Rule::incidence};
+  // A direction (W identically zero) counts as W > 0, as in kvd::side.
+  const int w = d.w.is_zero() ? 1 : lex_sign(d.w, t);
+  if (d.perturbed) {
+    if (!d.value.is_zero()) return {lex_sign(d.value, t) * w, Rule::perturbation};
+    if (unresolved_++ < 16) unresolved_cases_.emplace_back(v, p);
+    return {0, Rule::unresolved};
   }
-  // Rule 4: expand in ε; coefficients are polynomials in t.
-  const auto xe = perturbed().point(v);
-  const auto fe = dot(perturbed().plane(p), xe);
-  int w = 1;
-  if (derived)
-    for (const auto& c : xe[3].coefficients())
-      if (!c.is_zero()) {
-        w = lex_sign(c, t);
-        break;
-      }
-  for (const auto& c : fe.coefficients())
-    if (!c.is_zero()) return {lex_sign(c, t) * w, Rule::perturbation};
-  if (unresolved_++ < 16) unresolved_cases_.emplace_back(v, p);
-  return {0, Rule::unresolved};
+  const int s = k_->sign_at(d.value, t);
+  if (s != 0) return {s * w, Rule::value};
+  return {k_->sign_after(d.value, t) * w, Rule::after};
 }
 
 #define KVD_INSTANTIATE_CLASSIFIER(K) template class Classifier<K>;

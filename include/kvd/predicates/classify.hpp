@@ -63,6 +63,17 @@ public:
 
 private:
   int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
+
+  // What decides classify(v, p) at every instant: the value f = dot(plane,
+  // point), or, when f is identically zero (rule 4), the first coefficient of
+  // its ε-expansion that is not; and the W of a derived vertex taken the same
+  // way (zero for a scene vertex, whose W is positive, and for a direction).
+  struct Deciding {
+    bool incident = false;   // rule 1: nothing to decide
+    bool perturbed = false;  // the polynomials come from the ε-expansion
+    typename K::Poly value, w;
+  };
+  Deciding deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
 
   // The motion polynomials of each plane and vertex, computed once: a build
