@@ -106,8 +106,7 @@ Full_simulation<typename K::Time> simulate_full(const K& k, const scene::Scene& 
     failing.erase(std::unique(failing.begin(), failing.end()), failing.end());
     sim.failures += failing.size();
     sim.simultaneous_batches += failing.size() >= 2;
-    const std::size_t count = failing.size();
-    sim.events.push_back({*first, std::move(failing), count, certificates, tree::first_difference(current, next).has_value()});
+    sim.events.push_back({*first, std::move(failing), certificates, tree::first_difference(current, next).has_value()});
     current = std::move(next);
     now = *first;
     if (options.progress) options.progress(sim.events.size(), sim.failures);

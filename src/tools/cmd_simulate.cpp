@@ -93,11 +93,11 @@ int report(const K& k, const scene::Scene& s, const kinetic::Full_options& o, co
     const auto& e = sim.events[i];
     if (json)
       std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
-                << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failing
+                << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failing()
                 << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
     else
       std::cout << "event " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
-                << "): " << e.failing << " of " << e.certificates << " certificates fail, tree "
+                << "): " << e.failing() << " of " << e.certificates << " certificates fail, tree "
                 << (e.changed ? "changed" : "unchanged") << "\n";
   }
   if (json)

@@ -34,9 +34,10 @@ struct Full_event {
   Time time;
   // The certificates failing: classifications of a symbolic vertex against a symbolic plane.
   std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>> failing_certificates;
-  std::size_t failing = 0;       // certificates failing at this time
   std::size_t certificates = 0;  // certificates (non-incident classifications) before the event
   bool changed = false;          // whether the tree just after differs from the tree before
+  // How many certificates fail at this time.
+  std::size_t failing() const { return failing_certificates.size(); }
 };
 
 template <class Time>
