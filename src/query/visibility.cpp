@@ -15,20 +15,9 @@ Culling traverse(const predicates::Classifier<K>& classifier, const tree::Kvd_tr
   const K& kernel = classifier.kernel();
   const auto geometry = symbolic::at_instant(classifier.motion(), t);
   Culling r;
-  auto count = [&](int root, std::size_t& nodes, std::size_t& triangles) {
-    std::vector<int> pending{root};
-    while (!pending.empty()) {
-      const int i = pending.back();
-      pending.pop_back();
-      if (i < 0) continue;
-      const tree::Node& n = tree.nodes[static_cast<std::size_t>(i)];
-      ++nodes;
-      triangles += n.cut.kind == symbolic::Symbolic_plane::Kind::T;
-      pending.push_back(n.left);
-      pending.push_back(n.right);
-    }
-  };
-  count(tree.root, r.tree_nodes_total, r.triangle_nodes_total);
+  const tree::Tree_statistics all = tree.statistics();
+  r.tree_nodes_total = all.nodes;
+  r.triangle_nodes_total = all.t_nodes;
   // An explicit stack of (node, expanded?): an expanded node emits its own
   // fragment; an unexpanded one pushes near side, itself, far side.
   std::vector<std::pair<int, bool>> stack;
@@ -47,8 +36,13 @@ Culling traverse(const predicates::Classifier<K>& classifier, const tree::Kvd_tr
     if (near >= 0) stack.emplace_back(near, false);
     stack.emplace_back(i, true);
     if (far < 0) continue;
-    if (cull && triangle && s != 0) count(far, r.tree_nodes_culled, r.triangle_nodes_culled);
-    else stack.emplace_back(far, false);
+    if (cull && triangle && s != 0) {
+      const tree::Tree_statistics culled = tree.statistics(far);
+      r.tree_nodes_culled += culled.nodes;
+      r.triangle_nodes_culled += culled.t_nodes;
+    } else {
+      stack.emplace_back(far, false);
+    }
   }
   return r;
 }

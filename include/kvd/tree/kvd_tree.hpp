@@ -38,7 +38,9 @@ public:
   std::vector<Node> nodes;
   int root = -1;
 
-  Tree_statistics statistics() const;
+  // Of the whole tree, or of the subtree rooted at node `subtree`.
+  Tree_statistics statistics() const { return statistics(root); }
+  Tree_statistics statistics(int subtree) const;
   // The tree in pre-order, one node a line, indented by depth, each child
   // prefixed by "-" (left) or "+" (right): "+ E(2) [SV(e2,P1) SV(v0) SE(e2)]".
   std::string describe() const;
