@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -96,6 +97,13 @@ unsigned mpfr_bits(const std::string& command, const std::string& bits) {
       std::stoul(bits) < 2 || std::stoul(bits) > 65536)
     throw Usage_error("kvd " + command + ": --kernel mpfr:BITS needs BITS between 2 and 65536");
   return static_cast<unsigned>(std::stoul(bits));
+}
+
+std::string seconds_since(std::chrono::steady_clock::time_point start) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6f",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return buf;
 }
 
 std::string json_string(const std::string& s) { return nlohmann::json(s).dump(); }

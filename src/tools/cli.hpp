@@ -5,12 +5,14 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "kvd/kernel/kernel.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
 
@@ -81,6 +83,18 @@ void write_atomically(const std::string& command, const std::string& path, const
 
 // BITS of a --kernel mpfr:BITS option, between 2 and 65536.
 unsigned mpfr_bits(const std::string& command, const std::string& bits);
+
+// Calls f with the kernel a --kernel option names: exact, double or mpfr:BITS.
+template <class F>
+int with_kernel(const std::string& command, const std::string& name, F&& f) {
+  if (name == "exact") return f(Exact_kernel());
+  if (name == "double") return f(Double_kernel());
+  if (name.rfind("mpfr:", 0) == 0) return f(Mpfr_kernel(mpfr_bits(command, name.substr(5))));
+  throw Usage_error("kvd " + command + ": unknown kernel '" + name + "' (exact, double or mpfr:BITS)");
+}
+
+// Seconds elapsed since `start`, with microsecond digits ("0.012345").
+std::string seconds_since(std::chrono::steady_clock::time_point start);
 
 // JSON string literal for s (quotes and escapes).
 std::string json_string(const std::string& s);

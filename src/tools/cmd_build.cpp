@@ -43,10 +43,8 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
   const auto start = std::chrono::steady_clock::now();
   const predicates::Classifier<K> classifier(k, s);
   const tree::Kvd_tree t = build_tree("build", path, classifier, k.time(from_rational<typename K::FT>(time)));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string secs = seconds_since(start);
   const tree::Tree_statistics st = t.statistics();
-  char secs[32];
-  std::snprintf(secs, sizeof secs, "%.6f", seconds);
   if (json) {
     std::cout << "{\"kernel\": " << json_string(K::name) << ", \"time\": " << json_string(time.get_str())
               << ", \"vertices\": " << s.rest.size() << ", \"edges\": " << s.edges.size()
@@ -67,9 +65,7 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
 int run_bsp(const scene::Scene& s, const scene::Q& time, bool json) {
   const auto start = std::chrono::steady_clock::now();
   const bsp::Tree t = bsp::autopartition(s, time);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  char secs[32];
-  std::snprintf(secs, sizeof secs, "%.6f", seconds);
+  const std::string secs = seconds_since(start);
   if (json)
     std::cout << "{\"structure\": \"bsp\", \"time\": " << json_string(time.get_str()) << ", \"triangles\": "
               << s.triangles.size() << ", \"nodes\": " << t.nodes.size() << ", \"fragments\": " << t.fragments()
@@ -101,10 +97,7 @@ int build(Args& args) {
   const scene::Scene s = sa.load_scene("build");
   const scene::Q time = sa.time ? *sa.time : s.start;
   if (baseline) return run_bsp(s, time, sa.json);
-  if (kernel == "exact") return run(Exact_kernel(), *sa.path, s, time, sa.json);
-  if (kernel == "double") return run(Double_kernel(), *sa.path, s, time, sa.json);
-  if (kernel.rfind("mpfr:", 0) == 0) return run(Mpfr_kernel(mpfr_bits("build", kernel.substr(5))), *sa.path, s, time, sa.json);
-  throw Usage_error("kvd build: unknown kernel '" + kernel + "' (exact, double or mpfr:BITS)");
+  return with_kernel("build", kernel, [&](const auto& k) { return run(k, *sa.path, s, time, sa.json); });
 }
 
 }  // namespace kvd::cli

@@ -147,10 +147,7 @@ int simulate(Args& args) {
   o.progress = [](std::size_t batches, std::size_t failures) {
     if (batches % 100 == 0) std::cerr << "kvd simulate: " << batches << " batches, " << failures << " failures\n";
   };
-  if (kernel == "exact") return report(Exact_kernel(), s, o, trace, sa.json);
-  if (kernel == "double") return report(Double_kernel(), s, o, trace, sa.json);
-  if (kernel.rfind("mpfr:", 0) == 0) return report(Mpfr_kernel(mpfr_bits("simulate", kernel.substr(5))), s, o, trace, sa.json);
-  throw Usage_error("kvd simulate: unknown kernel '" + kernel + "' (exact, double or mpfr:BITS)");
+  return with_kernel("simulate", kernel, [&](const auto& k) { return report(k, s, o, trace, sa.json); });
 }
 
 }  // namespace kvd::cli
