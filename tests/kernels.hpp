@@ -34,6 +34,16 @@ inline mpq_class q(long n, long d) {
   return r;
 }
 
+// The sign-changing roots of p after `from`, in increasing order, by the
+// chain next_root(p, from), next_root(p, that root), ...
+inline std::vector<Exact_time> sign_changing_roots(const Poly<mpq_class>& p, const mpq_class& from) {
+  const Exact_kernel k;
+  std::vector<Exact_time> r;
+  Exact_time t(from);
+  while (auto n = k.next_root(p, t)) r.push_back(t = *n);
+  return r;
+}
+
 template <class K>
 typename K::Time at(const K& k, long v) {
   return k.time(typename K::FT(v));

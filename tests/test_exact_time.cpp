@@ -12,13 +12,7 @@ namespace {
 using P = kvd::Poly<mpq_class>;
 const kvd::Exact_kernel k;
 
-// The sign-changing roots of p after `from`, in order.
-std::vector<kvd::Exact_time> roots(const P& p, const mpq_class& from = -1000) {
-  std::vector<kvd::Exact_time> r;
-  kvd::Exact_time t(from);
-  while (auto n = k.next_root(p, t)) r.push_back(t = *n);
-  return r;
-}
+std::vector<kvd::Exact_time> roots(const P& p) { return kvd::test::sign_changing_roots(p, -1000); }
 
 const P t2m2{-2, 0, 1};  // t^2 - 2
 const P t2m3{-3, 0, 1};  // t^2 - 3

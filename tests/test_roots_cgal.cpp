@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cgal_roots.hpp"
+#include "kernels.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "random_poly.hpp"
 
@@ -100,9 +101,8 @@ TEST_CASE("compare agrees with CGAL on roots of polynomials with common factors"
     const ZPoly p = kvd::zpoly::mul(f, rnd.dense(1 + static_cast<int>(rnd.below(4)), 30));
     const ZPoly q = kvd::zpoly::mul(f, rnd.dense(1 + static_cast<int>(rnd.below(4)), 30));
     const Cgal_roots cgal_p(p);
-    std::vector<Exact_time> ours_p, ours_q;
-    for (Exact_time t(mpq_class(-1) << 300); auto n = k.next_root(kvd::zpoly::to_poly(p), t);) ours_p.push_back(t = *n);
-    for (Exact_time t(mpq_class(-1) << 300); auto n = k.next_root(kvd::zpoly::to_poly(q), t);) ours_q.push_back(t = *n);
+    const auto ours_p = kvd::test::sign_changing_roots(kvd::zpoly::to_poly(p), mpq_class(-1) << 300);
+    const auto ours_q = kvd::test::sign_changing_roots(kvd::zpoly::to_poly(q), mpq_class(-1) << 300);
     // Map our roots of p to CGAL's sign-changing roots of p, in order.
     std::vector<std::size_t> cgal_index;
     for (std::size_t j = 0; j < cgal_p.size(); ++j)
