@@ -72,9 +72,9 @@ Full_simulation<typename K::Time> simulate_full(const K& k, const scene::Scene& 
     evaluated.erase(std::unique(evaluated.begin(), evaluated.end()), evaluated.end());
     std::size_t certificates = 0;
     for (const auto& [v, p] : evaluated) {
-      const auto qs = c.certificate(v, p);
+      const auto& qs = c.certificate(v, p);
       certificates += !qs.empty();
-      for (auto& q : qs) polys.try_emplace(q.coefficients(), q, tree::Evaluated{}).first->second.second.emplace_back(v, p);
+      for (const auto& q : qs) polys.try_emplace(q.coefficients(), q, tree::Evaluated{}).first->second.second.emplace_back(v, p);
     }
     std::optional<Time> first;
     tree::Evaluated failing;

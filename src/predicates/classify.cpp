@@ -80,13 +80,16 @@ typename Classifier<K>::Deciding Classifier<K>::deciding(const symbolic::Symboli
 }
 
 template <class K>
-std::vector<typename K::Poly> Classifier<K>::certificate(const symbolic::Symbolic_vertex& given,
-                                                         const symbolic::Symbolic_plane& p) const {
-  const Deciding d = deciding(symbolic::canonical(motion_.scene(), given), p);
-  std::vector<typename K::Poly> out;
-  for (const auto* q : {&d.value, &d.w})
-    if (q->degree() >= 1) out.push_back(*q);
-  return out;
+const std::vector<typename K::Poly>& Classifier<K>::certificate(const symbolic::Symbolic_vertex& given,
+                                                                const symbolic::Symbolic_plane& p) const {
+  const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
+  auto [it, fresh] = certificates_.try_emplace({v, p});
+  if (fresh) {
+    const Deciding d = deciding(v, p);
+    for (const auto* q : {&d.value, &d.w})
+      if (q->degree() >= 1) it->second.push_back(*q);
+  }
+  return it->second;
 }
 
 template <class K>

@@ -47,8 +47,10 @@ public:
   // The polynomials in t whose sign changes are the only times classify(v, p)
   // can change: the value (or, under rule 4, the first ε-coefficient that is
   // not identically zero) and the W of a derived vertex; constants left out.
-  // Empty for an incidence by construction.
-  std::vector<typename K::Poly> certificate(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
+  // Empty for an incidence by construction. Computed once per pair: a
+  // simulation asks again at every batch.
+  const std::vector<typename K::Poly>& certificate(const symbolic::Symbolic_vertex& v,
+                                                   const symbolic::Symbolic_plane& p) const;
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
   // The position of v in the perturbed scene as ε -> 0+: its motion point,
   // or, where that vanishes identically (v built from planes that coincide
@@ -85,6 +87,8 @@ private:
   symbolic::Scene_geometry<typename K::Poly> motion_;
   mutable std::map<symbolic::Symbolic_plane, Plane4<typename K::Poly>> planes_;
   mutable std::map<symbolic::Symbolic_vertex, Point4<typename K::Poly>> points_;
+  mutable std::map<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>, std::vector<typename K::Poly>>
+      certificates_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
   mutable long unresolved_ = 0;
