@@ -91,13 +91,13 @@ Full_simulation<typename K::Time> simulate_full(const K& k, const scene::Scene& 
     }
     if (!first || (limit && k.compare(*first, *limit) > 0)) break;
     if (options.validate == Validation::every) validate(now, *first, current);
-    if (options.validate == Validation::end) before_last.emplace(now, current);
     evaluated.clear();
     tree::Kvd_tree next;
     try {
       next = tree::build(c, *first, &evaluated);
     } catch (const tree::Build_error& e) {
       sim.collision = "collision at t = " + k.to_string(*first) + ": " + e.what();
+      if (options.validate == Validation::end) before_last.emplace(now, current);  // current stays in force
       now = *first;
       break;
     }
@@ -107,6 +107,7 @@ Full_simulation<typename K::Time> simulate_full(const K& k, const scene::Scene& 
     sim.failures += failing.size();
     sim.simultaneous_batches += failing.size() >= 2;
     sim.events.push_back({*first, std::move(failing), certificates, tree::first_difference(current, next).has_value()});
+    if (options.validate == Validation::end) before_last.emplace(now, std::move(current));
     current = std::move(next);
     now = *first;
     if (options.progress) options.progress(sim.events.size(), sim.failures);
