@@ -19,7 +19,7 @@ namespace kvd::cli {
 namespace {
 
 const char* const build_help =
-    "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--bsp] [--json]\n"
+    "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--bsp] [--tree] [--json]\n"
     "\n"
     "Builds the KVD of the scene valid just after time T (default: the scene's\n"
     "start) and prints the construction statistics of the thesis's Figure 8.4:\n"
@@ -32,6 +32,8 @@ const char* const build_help =
     "  --bsp           build the baseline instead: the randomized auto-partition\n"
     "                  BSP with free splits (exact); prints nodes, fragments,\n"
     "                  height and seconds\n"
+    "  --tree          print the tree itself instead, one node a line in\n"
+    "                  pre-order (the format of Kvd_tree::describe)\n"
     "  --json          one JSON object: vertices, edges, triangles, p_nodes,\n"
     "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash\n"
     "\n"
@@ -39,13 +41,15 @@ const char* const build_help =
     "intersect at T) or bad usage.\n";
 
 template <class K>
-int run(const K& k, const std::string& path, const scene::Scene& s, const scene::Q& time, bool json) {
+int run(const K& k, const std::string& path, const scene::Scene& s, const scene::Q& time, bool json, bool tree_only) {
   const auto start = std::chrono::steady_clock::now();
   const predicates::Classifier<K> classifier(k, s);
   const tree::Kvd_tree t = build_tree("build", path, classifier, k.time(from_rational<typename K::FT>(time)));
   const std::string secs = seconds_since(start);
   const tree::Tree_statistics st = t.statistics();
-  if (json) {
+  if (tree_only) {
+    std::cout << t.describe();
+  } else if (json) {
     std::cout << "{\"kernel\": " << json_string(K::name) << ", \"time\": " << json_string(time.get_str())
               << ", \"vertices\": " << s.rest.size() << ", \"edges\": " << s.edges.size()
               << ", \"triangles\": " << s.triangles.size() << ", \"p_nodes\": " << st.p_nodes
@@ -83,7 +87,7 @@ int build(Args& args) {
   Scene_args sa;
   sa.wants_time = true;
   std::string kernel = "exact";
-  bool baseline = false;
+  bool baseline = false, tree_only = false;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -91,13 +95,14 @@ int build(Args& args) {
       return 0;
     }
     if (a == "--bsp") baseline = true;
+    else if (a == "--tree") tree_only = true;
     else if (a == "--kernel") kernel = args.value(a);
     else if (!sa.take(args, a)) args.unknown(a);
   }
   const scene::Scene s = sa.load_scene("build");
   const scene::Q time = sa.time ? *sa.time : s.start;
   if (baseline) return run_bsp(s, time, sa.json);
-  return with_kernel("build", kernel, [&](const auto& k) { return run(k, *sa.path, s, time, sa.json); });
+  return with_kernel("build", kernel, [&](const auto& k) { return run(k, *sa.path, s, time, sa.json, tree_only); });
 }
 
 }  // namespace kvd::cli
