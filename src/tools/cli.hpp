@@ -84,12 +84,22 @@ void write_atomically(const std::string& command, const std::string& path, const
 // BITS of a --kernel mpfr:BITS option, between 2 and 65536.
 unsigned mpfr_bits(const std::string& command, const std::string& bits);
 
-// Calls f with the kernel a --kernel option names: exact, double or mpfr:BITS.
+// Calls f with the kernel a --kernel option names: exact, double or
+// mpfr:BITS; a floating-point one with `epsilon` when given (--epsilon; the
+// exact kernel has none).
 template <class F>
-int with_kernel(const std::string& command, const std::string& name, F&& f) {
-  if (name == "exact") return f(Exact_kernel());
-  if (name == "double") return f(Double_kernel());
-  if (name.rfind("mpfr:", 0) == 0) return f(Mpfr_kernel(mpfr_bits(command, name.substr(5))));
+int with_kernel(const std::string& command, const std::string& name, F&& f,
+                const std::optional<mpq_class>& epsilon = std::nullopt) {
+  if (epsilon && *epsilon <= 0) throw Usage_error("kvd " + command + ": --epsilon must be positive");
+  if (name == "exact") {
+    if (epsilon) throw Usage_error("kvd " + command + ": --epsilon needs --kernel double or mpfr:BITS");
+    return f(Exact_kernel());
+  }
+  if (name == "double") return f(epsilon ? Double_kernel(epsilon->get_d()) : Double_kernel());
+  if (name.rfind("mpfr:", 0) == 0) {
+    const unsigned bits = mpfr_bits(command, name.substr(5));
+    return f(epsilon ? Mpfr_kernel(bits, Mpfr_number(*epsilon)) : Mpfr_kernel(bits));
+  }
   throw Usage_error("kvd " + command + ": unknown kernel '" + name + "' (exact, double or mpfr:BITS)");
 }
 

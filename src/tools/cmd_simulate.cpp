@@ -1,38 +1,51 @@
-// kvd simulate SCENE: the kinetic KVD with the full certificate set.
+// kvd simulate SCENE: the kinetic KVD, its events and the statistics of
+// thesis Figures 8.5-8.7.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "cli.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/kinetic/full_simulation.hpp"
+#include "kvd/kinetic/simulation.hpp"
 
 namespace kvd::cli {
 
 namespace {
 const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
-    "                    [--kernel exact|double|mpfr:BITS] [--trace FILE] [--json]\n"
+    "                    [--kernel exact|double|mpfr:BITS] [--epsilon E]\n"
+    "                    [--certificates reduced|full] [--queue tree|heap]\n"
+    "                    [--trace FILE] [--list] [--json]\n"
     "\n"
-    "Runs the kinetic KVD from the scene's start, with the exact kernel, the\n"
-    "full certificate set (every sign the construction evaluated) and the\n"
-    "reference update (rebuild just after each event), until the scene's end,\n"
-    "the last event, the batch holding the N-th certificate failure (default\n"
-    "100), or the last batch at a time <= T. Failures at the same algebraic\n"
-    "time are one batch. With --validate every (the default), the tree in force\n"
-    "between two batches is compared with a fresh build at a rational time\n"
-    "strictly between them (a difference is a missed event: a failed check);\n"
-    "with end, only before the last batch. Triangles that meet (a collision)\n"
-    "stop the simulation with a message and status 0. Progress goes to stderr\n"
-    "every 100 batches.\n"
+    "Runs the kinetic KVD from the scene's start with the reference update\n"
+    "(rebuild just after each batch), until the scene's end, the last event, the\n"
+    "batch holding the N-th certificate failure (default 100), or the last batch\n"
+    "at a time <= T. Failures at the same algebraic time are one batch. With\n"
+    "--validate every (the default), the tree in force between two batches is\n"
+    "compared with a fresh build at a rational time strictly between them (a\n"
+    "difference is a missed event: a failed check); with end, only before the\n"
+    "last batch. Triangles that meet (a collision) stop the simulation with a\n"
+    "message and status 0. Prints the statistics of the thesis's Figures\n"
+    "8.5-8.7; progress goes to stderr every 100 batches.\n"
     "\n"
-    "  --kernel K     exact (default); double or mpfr:BITS group the failures\n"
-    "                 within the kernel's epsilon of the earliest (the thesis's\n"
-    "                 epsilon-minimum) and validate at midpoints\n"
-    "  --trace FILE   one JSON line per certificate failure (format in the README)\n"
-    "  --json   {\"batches\": [{\"time\": EXACT, \"approx\": DECIMAL, \"failing\": N,\n"
-    "           \"certificates\": N, \"changed\": BOOL}, ...], \"events\": N,\n"
-    "           \"simultaneous_batches\": N, \"collisions\": N, \"validation_failures\": N,\n"
-    "           \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT, \"structure_hash\": HEX}\n"
+    "  --certificates S  reduced (default): the thesis's set (thesis 6.4);\n"
+    "                    full: every sign the construction evaluated\n"
+    "  --queue Q         tree (default): the kinetic priority queue in the KVD\n"
+    "                    (thesis 6.5); heap: a mutable pairing heap\n"
+    "  --kernel K        exact (default); double or mpfr:BITS group the failures\n"
+    "                    within epsilon of the earliest (the thesis's\n"
+    "                    epsilon-minimum) and validate at midpoints\n"
+    "  --epsilon E       that epsilon (default 1e-9 for double, 2^(-BITS/2) for mpfr)\n"
+    "  --trace FILE      one JSON line per certificate failure (format in the README)\n"
+    "  --list            one line per batch\n"
+    "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batches\": [{\"time\": EXACT,\n"
+    "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL}, ...],\n"
+    "           \"events\": N, \"batch_count\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
+    "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
+    "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
+    "           \"construction_ms\": X, \"update_ms\": {\"average\", \"max\", \"stddev\"},\n"
+    "           \"tree_update_share\": X, \"certificate_update_share\": X}\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation, 2 on bad input.\n";
 
@@ -41,19 +54,6 @@ std::string approx(double d) {
   std::snprintf(buf, sizeof buf, "%.17g", d);
   return buf;
 }
-const char* kind_name(symbolic::Symbolic_vertex::Kind k) {
-  using K = symbolic::Symbolic_vertex::Kind;
-  switch (k) {
-    case K::endpoint: return "endpoint";
-    case K::intersection: return "intersection";
-    case K::thread: return "thread";
-    case K::internal_intersection: return "internal-intersection";
-    case K::internal_thread: return "internal-thread";
-    case K::axis: return "axis";
-  }
-  return "?";
-}
-
 // The isolating interval of an exact time; a floating-point time is its own.
 std::pair<std::string, std::string> interval(const Exact_kernel&, const Exact_time& t) {
   return {t.lower().get_str(), t.upper().get_str()};
@@ -65,51 +65,118 @@ std::pair<std::string, std::string> interval(const K& k, const typename K::Time&
 
 // JSON Lines, one per certificate failure, in batch order.
 template <class K>
-std::string trace_lines(const K& k, const kinetic::Full_simulation<typename K::Time>& sim) {
+std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>& sim) {
   std::string out;
-  for (std::size_t b = 0; b < sim.events.size(); ++b) {
-    const auto& e = sim.events[b];
+  for (std::size_t b = 0; b < sim.batches.size(); ++b) {
+    const auto& e = sim.batches[b];
     const auto [lo, hi] = interval(k, e.time);
     const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(k.to_string(e.time)) +
                              ", \"interval\": [" + json_string(lo) + ", " + json_string(hi) +
                              "], \"approx\": " + json_string(approx(k.to_double(e.time)));
-    for (const auto& [v, p] : e.failing_certificates) {
-      const char* plane = p.kind == symbolic::Symbolic_plane::Kind::P ? "P" : p.kind == symbolic::Symbolic_plane::Kind::E ? "E" : "T";
-      out += head + ", \"certificate\": " + json_string(std::string(kind_name(v.kind)) + "/" + plane) +
-             ", \"vertex\": " + json_string(symbolic::to_string(v)) + ", \"plane\": " + json_string(symbolic::to_string(p)) +
-             "}\n";
-    }
+    for (const auto& f : e.failing)
+      out += head + ", \"certificate\": " + json_string(kinetic::to_string(f.type)) +
+             ", \"nodes\": " + json_string(f.nodes) + "}\n";
   }
   return out;
 }
 
-template <class K>
-int report(const K& k, const scene::Scene& s, const kinetic::Full_options& o, const std::optional<std::string>& trace,
-           bool json) {
-  const auto sim = kinetic::simulate_full(k, s, o);
-  if (trace) write_atomically("simulate", *trace, trace_lines(k, sim));
-  if (json) std::cout << "{\"kernel\": " << json_string(K::name) << ", \"batches\": [";
-  for (std::size_t i = 0; i < sim.events.size(); ++i) {
-    const auto& e = sim.events[i];
-    if (json)
-      std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
-                << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failing()
-                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
-    else
-      std::cout << "event " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
-                << "): " << e.failing() << " of " << e.certificates << " certificates fail, tree "
-                << (e.changed ? "changed" : "unchanged") << "\n";
+// The update-cost statistics of the thesis's Figures 8.6 and 8.7, in ms.
+struct Update_costs {
+  double average = 0, max = 0, stddev = 0, tree_share = 0, certificate_share = 0;
+};
+template <class Time>
+Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
+  Update_costs u;
+  if (sim.batches.empty()) return u;
+  double sum = 0, squares = 0, tree = 0;
+  for (const auto& b : sim.batches) {
+    const double ms = 1000 * (b.tree_seconds + b.certificate_seconds);
+    sum += ms;
+    squares += ms * ms;
+    tree += 1000 * b.tree_seconds;
+    u.max = std::max(u.max, ms);
   }
-  if (json)
-    std::cout << "], \"events\": " << sim.failures << ", \"simultaneous_batches\": " << sim.simultaneous_batches
+  const double n = static_cast<double>(sim.batches.size());
+  u.average = sum / n;
+  u.stddev = std::sqrt(std::max(0.0, squares / n - u.average * u.average));
+  u.tree_share = sum > 0 ? tree / sum : 0;
+  u.certificate_share = sum > 0 ? 1 - u.tree_share : 0;
+  return u;
+}
+
+std::string by_type_json(const kinetic::Type_counts& counts) {
+  std::string out = "{";
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    out += (i ? ", " : "") + json_string(kinetic::to_string(static_cast<kinetic::Certificate_type>(i))) + ": " +
+           std::to_string(counts[i]);
+  return out + "}";
+}
+std::string by_type_text(const kinetic::Type_counts& counts) {
+  std::string out;
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    total += counts[i];
+    if (counts[i]) out += std::string(" ") + kinetic::to_string(static_cast<kinetic::Certificate_type>(i)) + " " + std::to_string(counts[i]);
+  }
+  return std::to_string(total) + (out.empty() ? "" : " (" + out.substr(1) + ")");
+}
+
+std::string fixed(double x, int digits) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+template <class K>
+int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const std::optional<std::string>& trace,
+           bool list, bool json) {
+  const auto sim = kinetic::simulate(k, s, o);
+  if (trace) write_atomically("simulate", *trace, trace_lines(k, sim));
+  const Update_costs u = update_costs(sim);
+  const char* set = o.certificates == kinetic::Certificate_set::reduced ? "reduced" : "full";
+  const char* queue = o.queue == kinetic::Queue_kind::tree ? "tree" : "heap";
+  if (json) {
+    std::cout << "{\"kernel\": " << json_string(K::name) << ", \"certificate_set\": " << json_string(set)
+              << ", \"queue\": " << json_string(queue) << ", \"batches\": [";
+    for (std::size_t i = 0; i < sim.batches.size(); ++i) {
+      const auto& e = sim.batches[i];
+      std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
+                << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failures()
+                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
+    }
+    std::cout << "], \"events\": " << sim.failures << ", \"batch_count\": " << sim.batches.size()
+              << ", \"simultaneous_batches\": " << sim.simultaneous_batches
               << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
               << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
               << ", \"time_reached_exact\": " << json_string(k.to_string(sim.time_reached))
-              << ", \"structure_hash\": " << json_string(sim.structure_hash) << "}\n";
-  else
-    std::cout << sim.failures << " certificate failures in " << sim.events.size() << " batches ("
-              << sim.simultaneous_batches << " simultaneous), time reached " << approx(k.to_double(sim.time_reached))
-              << ", structure " << sim.structure_hash << "\n";
+              << ", \"structure_hash\": " << json_string(sim.structure_hash)
+              << ", \"certificates_by_type\": " << by_type_json(sim.initial_certificates)
+              << ", \"events_by_type\": " << by_type_json(sim.failures_by_type)
+              << ", \"construction_ms\": " << fixed(1000 * sim.construction_seconds, 3) << ", \"update_ms\": {\"average\": "
+              << fixed(u.average, 3) << ", \"max\": " << fixed(u.max, 3) << ", \"stddev\": " << fixed(u.stddev, 3)
+              << "}, \"tree_update_share\": " << fixed(u.tree_share, 3)
+              << ", \"certificate_update_share\": " << fixed(u.certificate_share, 3) << "}\n";
+  } else {
+    if (list)
+      for (std::size_t i = 0; i < sim.batches.size(); ++i) {
+        const auto& e = sim.batches[i];
+        std::cout << "batch " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
+                  << "): " << e.failures() << " of " << e.certificates << " certificates fail, tree "
+                  << (e.changed ? "changed" : "unchanged") << "\n";
+      }
+    std::cout << "kernel:        " << K::name << ", " << set << " certificates, " << queue << " queue\n"
+              << "events:        " << sim.failures << " certificate failures in " << sim.batches.size() << " batches ("
+              << sim.simultaneous_batches << " simultaneous)\n"
+              << "time reached:  " << approx(k.to_double(sim.time_reached)) << "\n"
+              << "structure:     " << sim.structure_hash << "\n"
+              << "certificates:  " << by_type_text(sim.initial_certificates) << " at the start\n"
+              << "events:        " << by_type_text(sim.failures_by_type) << "\n"
+              << "construction:  " << fixed(1000 * sim.construction_seconds, 3) << " ms\n"
+              << "update (ms):   average " << fixed(u.average, 3) << ", max " << fixed(u.max, 3) << ", stddev "
+              << fixed(u.stddev, 3) << "\n"
+              << "update shares: tree " << fixed(u.tree_share, 2) << ", certificates " << fixed(u.certificate_share, 2)
+              << "\n";
+  }
   if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
   if (!sim.valid()) {
     std::cerr << "kvd simulate: validation failed: " << sim.failure << "\n";
@@ -122,9 +189,11 @@ int report(const K& k, const scene::Scene& s, const kinetic::Full_options& o, co
 
 int simulate(Args& args) {
   Scene_args sa;
-  kinetic::Full_options o;
+  kinetic::Options o;
   std::optional<std::string> trace;
+  std::optional<mpq_class> epsilon;
   std::string kernel = "exact";
+  bool list = false;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -133,9 +202,21 @@ int simulate(Args& args) {
     }
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--kernel") kernel = args.value(a);
+    else if (a == "--epsilon") epsilon = exact_option("simulate", a, args.value(a));
     else if (a == "--trace") trace = args.value(a);
+    else if (a == "--list") list = true;
     else if (a == "--until") o.until = exact_option("simulate", a, args.value(a));
-    else if (a == "--validate") {
+    else if (a == "--certificates") {
+      const std::string& v = args.value(a);
+      if (v == "reduced") o.certificates = kinetic::Certificate_set::reduced;
+      else if (v == "full") o.certificates = kinetic::Certificate_set::full;
+      else throw Usage_error("kvd simulate: --certificates expects reduced or full");
+    } else if (a == "--queue") {
+      const std::string& v = args.value(a);
+      if (v == "tree") o.queue = kinetic::Queue_kind::tree;
+      else if (v == "heap") o.queue = kinetic::Queue_kind::heap;
+      else throw Usage_error("kvd simulate: --queue expects tree or heap");
+    } else if (a == "--validate") {
       const std::string& v = args.value(a);
       if (v == "every") o.validate = kinetic::Validation::every;
       else if (v == "end") o.validate = kinetic::Validation::end;
@@ -147,7 +228,8 @@ int simulate(Args& args) {
   o.progress = [](std::size_t batches, std::size_t failures) {
     if (batches % 100 == 0) std::cerr << "kvd simulate: " << batches << " batches, " << failures << " failures\n";
   };
-  return with_kernel("simulate", kernel, [&](const auto& k) { return report(k, s, o, trace, sa.json); });
+  return with_kernel(
+      "simulate", kernel, [&](const auto& k) { return report(k, s, o, trace, list, sa.json); }, epsilon);
 }
 
 }  // namespace kvd::cli

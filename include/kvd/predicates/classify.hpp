@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "kvd/scene/scene.hpp"
+#include "kvd/symbolic/incidence.hpp"
 #include "kvd/symbolic/scene_geometry.hpp"
 #include "kvd/symbolic/symbolic.hpp"
 
@@ -51,7 +52,19 @@ public:
   // simulation asks again at every batch.
   const std::vector<typename K::Poly>& certificate(const symbolic::Symbolic_vertex& v,
                                                    const symbolic::Symbolic_plane& p) const;
+  // The polynomial whose sign, times that of the vertex's W, is the side:
+  // the value, or under rule 4 the first ε-coefficient that is not
+  // identically zero; zero for an incidence by construction.
+  typename K::Poly value(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const {
+    return deciding(symbolic::canonical(motion_.scene(), v), p).value;
+  }
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
+  // The motion polynomials of each plane and vertex, computed once: a build
+  // classifies the same features against each other many times.
+  const Plane4<typename K::Poly>& plane_poly(const symbolic::Symbolic_plane& p) const;
+  const Point4<typename K::Poly>& point_poly(const symbolic::Symbolic_vertex& v) const;
+  // The sign of f at t, or just after t where f(t) = 0 (zero only for f = 0).
+  int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
   // The position of v in the perturbed scene as ε -> 0+: its motion point,
   // or, where that vanishes identically (v built from planes that coincide
   // in the unperturbed scene, such as P(v) and E(e) of an edge parallel to
@@ -64,7 +77,6 @@ public:
   }
 
 private:
-  int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
 
   // What decides classify(v, p) at every instant: the value f = dot(plane,
   // point), or, when f is identically zero (rule 4), the first coefficient of
@@ -77,11 +89,6 @@ private:
   };
   Deciding deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
-
-  // The motion polynomials of each plane and vertex, computed once: a build
-  // classifies the same features against each other many times.
-  const Plane4<typename K::Poly>& plane_poly(const symbolic::Symbolic_plane& p) const;
-  const Point4<typename K::Poly>& point_poly(const symbolic::Symbolic_vertex& v) const;
 
   const K* k_;
   symbolic::Scene_geometry<typename K::Poly> motion_;

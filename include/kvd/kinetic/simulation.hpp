@@ -1,9 +1,8 @@
-// The kinetic KVD with the full certificate set and the reference update
-// (DESIGN.md section 5): the certificates are every sign the construction
-// evaluated; the next event is the smallest sign-changing root, after the
-// current time, of any of their polynomials; an event batch is every
-// certificate failing at that same time; the update rebuilds the tree valid
-// just after it.
+// The kinetic KVD with the reference update (DESIGN.md section 5): the
+// certificates of the tree in force (the reduced or the full set) go into an
+// event queue; the next batch is every certificate failing at the earliest
+// failure time after the current one; the update rebuilds the tree valid
+// just after it and recomputes every certificate.
 //
 // In the exact kernel event times are algebraic numbers ordered exactly and
 // a batch is an exact equality. The floating-point kernels compare times
@@ -16,35 +15,46 @@
 // missed.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "kvd/kernel/exact_kernel.hpp"
+#include "kvd/kinetic/certificate.hpp"
+#include "kvd/kinetic/event_queue.hpp"
 #include "kvd/scene/scene.hpp"
-#include "kvd/symbolic/symbolic.hpp"
 
 namespace kvd::kinetic {
 
-template <class Time>
-struct Full_event {
-  Time time;
-  // The certificates failing: classifications of a symbolic vertex against a symbolic plane.
-  std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>> failing_certificates;
-  std::size_t certificates = 0;  // certificates (non-incident classifications) before the event
-  bool changed = false;          // whether the tree just after differs from the tree before
-  // How many certificates fail at this time.
-  std::size_t failing() const { return failing_certificates.size(); }
+struct Failure {
+  Certificate_type type;
+  std::string nodes;  // the certificate's symbolic features
 };
 
 template <class Time>
-struct Full_simulation {
-  std::vector<Full_event<Time>> events;  // one per batch
-  std::size_t failures = 0;              // certificate failures processed (the "events")
+struct Batch {
+  Time time;
+  std::vector<Failure> failing;  // the certificates failing at `time`
+  std::size_t certificates = 0;  // in force before the batch
+  bool changed = false;          // whether the tree just after differs from the tree before
+  double tree_seconds = 0;         // rebuilding the tree
+  double certificate_seconds = 0;  // making the certificates, their failure times and the queue
+  std::size_t failures() const { return failing.size(); }
+};
+
+using Type_counts = std::array<std::size_t, certificate_types>;
+
+template <class Time>
+struct Simulation {
+  std::vector<Batch<Time>> batches;
+  std::size_t failures = 0;  // certificate failures processed (the "events")
   std::size_t simultaneous_batches = 0;
+  Type_counts initial_certificates{};  // by type, for the tree at the start (thesis Figure 8.5)
+  Type_counts failures_by_type{};
+  double construction_seconds = 0;  // the first tree, its certificates and the queue
   Time time_reached{};
   std::string structure_hash;            // of the tree in force at the end
   std::optional<std::string> collision;  // triangles meeting: the simulation stops there
@@ -55,10 +65,12 @@ struct Full_simulation {
 
 enum class Validation { every, end, none };
 
-struct Full_options {
+struct Options {
   std::size_t max_events = 100;             // stop after the batch holding the N-th failure
   std::optional<mpq_class> until;           // process every batch at a time <= until
   Validation validate = Validation::every;  // between every two batches, or only the last
+  Certificate_set certificates = Certificate_set::reduced;
+  Queue_kind queue = Queue_kind::tree;
   // Called after every batch with the number of batches and of failures so far.
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };
@@ -67,7 +79,7 @@ struct Full_options {
 // max_events, or a collision (a fragment crossing a triangle's plane when the
 // tree is rebuilt: the triangles meet).
 template <class K>
-Full_simulation<typename K::Time> simulate_full(const K& kernel, const scene::Scene& s, const Full_options& options);
+Simulation<typename K::Time> simulate(const K& kernel, const scene::Scene& s, const Options& options);
 
 // A rational strictly between a < b.
 mpq_class rational_between(const Exact_time& a, const Exact_time& b);

@@ -1,0 +1,60 @@
+// Certificates (thesis 6.3-6.4): named polynomial signs that hold while the
+// tree stays what it is. A certificate fails at the earliest sign-changing
+// root, after the current time, of any of its polynomials.
+//
+// Two sets are computed from the tree in force:
+//  * full: every sign the construction evaluated (DESIGN.md section 5);
+//    complete by construction, since the construction branches on nothing
+//    else;
+//  * reduced: the thesis's set (thesis 6.4), per node, against the walls of
+//    its cell: VV, VE, VT for a P-node's vertex, IV and II for the
+//    intersection points held by E-node fragments, ET and VE for an E-node's
+//    intersection and thread endpoints, TT (a VT certificate) for the
+//    P-cuts crossing a T-node's fragment. Polynomials and their derivation:
+//    proofs/certificates.md.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "kvd/predicates/classify.hpp"
+#include "kvd/tree/build.hpp"
+#include "kvd/tree/kvd_tree.hpp"
+
+namespace kvd::kinetic {
+
+// `other` only occurs in the full set: signs of fragment corners (threads,
+// internal vertices) that the thesis's set does not name.
+enum class Certificate_type { VV, VE, VT, ET, IV, II, TT, other };
+inline constexpr std::size_t certificate_types = 8;
+const char* to_string(Certificate_type t);
+// Vertex-triangle, edge-edge and triangle-vertex failures are collisions
+// when the features touch (thesis 6.2.3).
+bool may_collide(Certificate_type t);
+
+template <class Poly>
+struct Certificate {
+  Certificate_type type;
+  std::string nodes;        // the symbolic features, e.g. "SV(v3) P(7)"; its identity
+  int node;                 // the tree node holding it (the kinetic priority queue's slot)
+  std::vector<Poly> polys;  // non-constant, each positive just after the time it was made
+};
+
+enum class Certificate_set { reduced, full };
+
+// The full set: one certificate per distinct classification in `evaluated`
+// that is not an incidence by construction, held by the first node of t
+// (pre-order) whose cut is the classification's plane.
+template <class K>
+std::vector<Certificate<typename K::Poly>> full_certificates(const predicates::Classifier<K>& c,
+                                                             const tree::Kvd_tree& t, tree::Evaluated evaluated,
+                                                             const typename K::Time& now);
+
+// The reduced set of the tree in force just after `now`.
+template <class K>
+std::vector<Certificate<typename K::Poly>> reduced_certificates(const predicates::Classifier<K>& c,
+                                                                const tree::Kvd_tree& t,
+                                                                const typename K::Time& now);
+
+}  // namespace kvd::kinetic

@@ -1,0 +1,171 @@
+#include "kvd/kinetic/simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/predicates/classify.hpp"
+#include "kvd/tree/build.hpp"
+#include "kvd/tree/compare.hpp"
+
+namespace kvd::kinetic {
+
+mpq_class rational_between(const Exact_time& a, const Exact_time& b) {
+  for (;;) {
+    const mpq_class lo = a.is_rational() ? a.rational() : a.upper();
+    const mpq_class hi = b.is_rational() ? b.rational() : b.lower();
+    if (lo < hi) return (lo + hi) / 2;
+    a.refine();
+    b.refine();
+  }
+}
+
+namespace {
+
+// A time strictly between a < b: a rational in the exact kernel, the
+// midpoint in the floating-point ones.
+Exact_time between(const Exact_kernel&, const Exact_time& a, const Exact_time& b) {
+  return Exact_time(rational_between(a, b));
+}
+template <class K>
+typename K::Time between(const K&, const typename K::Time& a, const typename K::Time& b) {
+  return (a + b) / typename K::FT(2);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class K>
+class Simulator {
+  using Time = typename K::Time;
+  using FT = typename K::FT;
+
+public:
+  Simulator(const K& k, const scene::Scene& s, const Options& o)
+      : k_(k), c_(k, s), o_(o), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
+    if (s.end) limit_ = k.time(from_rational<FT>(*s.end));
+    if (o.until) {
+      const Time until = k.time(from_rational<FT>(*o.until));
+      if (!limit_ || k.compare(until, *limit_) < 0) limit_ = until;
+    }
+  }
+
+  Simulation<Time> run() {
+    const auto start = std::chrono::steady_clock::now();
+    current_ = tree::build(c_, now_, full() ? &evaluated_ : nullptr);
+    make_certificates();
+    sim_.construction_seconds = seconds_since(start);
+    for (const auto& cert : certs_) ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)];
+    std::optional<std::pair<Time, tree::Kvd_tree>> before_last;  // for Validation::end
+    while (sim_.failures < o_.max_events) {
+      const std::optional<Time> next = queue_->first_time();
+      if (!next || (limit_ && k_.compare(*next, *limit_) > 0)) break;
+      if (o_.validate == Validation::every) validate(now_, *next, current_);
+      Batch<Time> batch{*next};
+      batch.certificates = certs_.size();
+      for (std::size_t id : queue_->first()) batch.failing.push_back({certs_[id].type, certs_[id].nodes});
+      std::sort(batch.failing.begin(), batch.failing.end(),
+                [](const Failure& a, const Failure& b) { return std::tie(a.type, a.nodes) < std::tie(b.type, b.nodes); });
+      const auto tree_start = std::chrono::steady_clock::now();
+      evaluated_.clear();
+      tree::Kvd_tree after;
+      try {
+        after = tree::build(c_, *next, full() ? &evaluated_ : nullptr);
+      } catch (const tree::Build_error& e) {
+        sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + e.what() + colliding(batch);
+        if (o_.validate == Validation::end) before_last.emplace(now_, current_);  // current stays in force
+        now_ = *next;
+        break;
+      }
+      batch.tree_seconds = seconds_since(tree_start);
+      batch.changed = tree::first_difference(current_, after).has_value();
+      sim_.failures += batch.failures();
+      sim_.simultaneous_batches += batch.failures() >= 2;
+      for (const Failure& f : batch.failing) ++sim_.failures_by_type[static_cast<std::size_t>(f.type)];
+      if (o_.validate == Validation::end) before_last.emplace(now_, std::move(current_));
+      current_ = std::move(after);
+      now_ = *next;
+      const auto cert_start = std::chrono::steady_clock::now();
+      make_certificates();
+      batch.certificate_seconds = seconds_since(cert_start);
+      sim_.batches.push_back(std::move(batch));
+      if (o_.progress) o_.progress(sim_.batches.size(), sim_.failures);
+    }
+    if (o_.validate == Validation::end && before_last) validate(before_last->first, now_, before_last->second);
+    sim_.time_reached = now_;
+    sim_.structure_hash = tree::structure_hash(current_);
+    return std::move(sim_);
+  }
+
+private:
+  bool full() const { return o_.certificates == Certificate_set::full; }
+
+  // The certificates of the tree in force, their failure times, the queue.
+  void make_certificates() {
+    certs_ = full() ? full_certificates(c_, current_, evaluated_, now_) : reduced_certificates(c_, current_, now_);
+    queue_->reset(current_);
+    for (std::size_t i = 0; i < certs_.size(); ++i) {
+      std::optional<Time> first;
+      for (const auto& q : certs_[i].polys) {
+        const auto& r = next_root(q);
+        if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
+      }
+      queue_->set(i, certs_[i].node, std::move(first));
+    }
+  }
+
+  // The first sign-changing root of q after now, cached per polynomial.
+  const std::optional<Time>& next_root(const typename K::Poly& q) {
+    auto it = roots_.find(q.coefficients());
+    if (it == roots_.end() || (it->second && k_.compare(*it->second, now_) <= 0))
+      it = roots_.insert_or_assign(q.coefficients(), k_.next_root(q, now_)).first;
+    return it->second;
+  }
+
+  // Checks the tree in force on (from, to) against a fresh build at a time
+  // strictly between: a difference is a missed event.
+  void validate(const Time& from, const Time& to, const tree::Kvd_tree& in_force) {
+    const Time mid = between(k_, from, to);
+    const auto diff = tree::first_difference(in_force, tree::build(c_, mid));
+    if (!diff) return;
+    if (sim_.validation_failures++ == 0)
+      sim_.failure = "between " + k_.to_string(from) + " and " + k_.to_string(to) + ", at " + k_.to_string(mid) +
+                     ", the tree in force differs from a fresh build: " + *diff;
+  }
+
+  static std::string colliding(const Batch<Time>& b) {
+    std::string out;
+    for (const Failure& f : b.failing)
+      if (may_collide(f.type)) out += std::string(out.empty() ? "; failing: " : ", ") + to_string(f.type) + " " + f.nodes;
+    return out;
+  }
+
+  const K& k_;
+  const predicates::Classifier<K> c_;
+  const Options& o_;
+  std::unique_ptr<Event_queue<K>> queue_;
+  Time now_;
+  std::optional<Time> limit_;
+  tree::Kvd_tree current_;
+  tree::Evaluated evaluated_;  // by the last build, for the full set
+  std::vector<Certificate<typename K::Poly>> certs_;
+  std::map<std::vector<FT>, std::optional<Time>> roots_;
+  Simulation<Time> sim_;
+};
+
+}  // namespace
+
+template <class K>
+Simulation<typename K::Time> simulate(const K& k, const scene::Scene& s, const Options& options) {
+  return Simulator<K>(k, s, options).run();
+}
+
+#define KVD_INSTANTIATE_SIMULATE(K) \
+  template Simulation<K::Time> simulate<K>(const K&, const scene::Scene&, const Options&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SIMULATE)
+
+}  // namespace kvd::kinetic
