@@ -129,7 +129,20 @@ TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulat
   std::fclose(f);
   CHECK(std::string(line.data()) ==
         "{\"batch\": 0, \"time\": \"2\", \"interval\": [\"2\", \"2\"], \"approx\": \"2\", "
-        "\"certificate\": \"endpoint/E\", \"vertex\": \"SV(v4)\", \"plane\": \"E(1)\"}\n");
+        "\"certificate\": \"VE\", \"nodes\": \"SV(v4) E(1)\"}\n");
+  // Both certificate sets and both queues give the same three batches.
+  for (const char* opts : {" --certificates full --queue heap", " --queue heap", " --certificates full"}) {
+    const Run other = run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --json" + opts);
+    CHECK(other.status == 0);
+    CHECK(other.out.find("\"batch_count\": 3,") != std::string::npos);
+    CHECK(other.out.find("\"time_reached_exact\": \"4\"") != std::string::npos);
+  }
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --certificates some").status == 2);
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --queue list").status == 2);
+  // --epsilon belongs to the floating-point kernels, and must be positive.
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --epsilon 1/1000").status == 2);
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --kernel double --epsilon 0").status == 2);
+  CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --kernel double --epsilon 1/1000").status == 0);
   CHECK(run("simulate").status == 2);
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --events x").status == 2);
 }

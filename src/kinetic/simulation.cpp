@@ -83,6 +83,7 @@ public:
       }
       batch.tree_seconds = seconds_since(tree_start);
       batch.changed = tree::first_difference(current_, after).has_value();
+      if (batch.changed) batch.structure = tree::structure_hash(after);
       sim_.failures += batch.failures();
       sim_.simultaneous_batches += batch.failures() >= 2;
       for (const Failure& f : batch.failing) ++sim_.failures_by_type[static_cast<std::size_t>(f.type)];

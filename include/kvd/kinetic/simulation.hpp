@@ -40,6 +40,7 @@ struct Batch {
   std::vector<Failure> failing;  // the certificates failing at `time`
   std::size_t certificates = 0;  // in force before the batch
   bool changed = false;          // whether the tree just after differs from the tree before
+  std::string structure;         // the tree's structure hash just after, when changed
   double tree_seconds = 0;         // rebuilding the tree
   double certificate_seconds = 0;  // making the certificates, their failure times and the queue
   std::size_t failures() const { return failing.size(); }
