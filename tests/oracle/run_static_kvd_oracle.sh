@@ -80,6 +80,11 @@ compare degenerate "$d/cycle3.json"
 # The same scenes with those ties broken (tests/oracle/scenes/).
 for s in 0 1 2; do compare general "$o/two-triangles-generic.json" --seed "$s"; done
 for s in 0 1 3 5; do compare general "$o/cycle3-generic.json" --seed "$s"; done
+# Objects of several triangles: shared vertices and edges are cut once, by
+# their triangle of highest priority; internal vertices on the vertical line
+# through a mesh vertex.
+compare general "$o/meshes-generic.json"
+for s in 0 1; do compare general "$o/meshes-generic.json" --seed "$s"; done
 # random-20 and the uniform scenes move, but the tree just after the instant
 # is the tree of the configuration at the instant whenever no sign is zero
 # there, which the oracle checks (it refuses otherwise).

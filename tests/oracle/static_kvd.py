@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """An independent oracle for the static KVD construction (thesis 5.3.3).
 
-Usage: static_kvd.py SCENE.json [--time T] [--seed S]
+Usage: static_kvd.py SCENE.json [--time T] [--seed S] [--stats]
+       static_kvd.py --self-check
 
 Prints the KVD of the scene at the instant T (default: the scene's start) in
 the format of `kvd build SCENE --tree` (Kvd_tree::describe): one node a line,
@@ -30,6 +31,21 @@ its positive side iff det > 0. The planes are
   P(V) = x v z v V        (det[x; z; V; s])
   E(e) = a v b v z        (det[a; b; z; s], e = (a, b) as first seen)
   T(t) = i v j v k        (det[i; j; k; s], the triangle's written order)
+
+A vertex is ON a plane only by construction (thesis 5.3.1): the planes it was
+built from, the planes through the scene features it lies on, and one case
+proofs/classification.md does not list: P(w) and the E-planes of the edges
+at w all contain the vertical line w v z, so an internal vertex built from
+two of them lies on all of them (see Oracle.on_z_line). Every ON answer is
+also checked to be an exact zero, and every other sign to be non-zero.
+
+Motion is used only to place the vertices at T and to put static triangles
+first in the priority order; the tree at T-just-after equals the tree of that
+configuration whenever no sign is zero at T, which is exactly when the oracle
+answers. --stats prints the node and sign counts, and the classifications
+decided ON by the vertical-line rule, on stderr. Exit status: 0 tree printed,
+2 usage, 3 degenerate or unsupported scene; an internal inconsistency
+(including the geometric self-check `verify` of the built tree) raises.
 """
 
 import json
