@@ -24,10 +24,9 @@ bool edge_of_triangle(const scene::Scene& s, std::size_t e, std::size_t t) {
   return std::find(te.begin(), te.end(), e) != te.end();
 }
 
-// The scene vertex w such that v lies on the line w ∨ z by construction: an
-// internal thread (V, E, T) with V an endpoint of E (P(V) and E(E) share that
-// line), or an internal intersection of two E-planes of edges sharing w. The
-// line lies in P(w) and in the E-plane of every edge at w.
+// The scene vertex w such that v, an internal vertex, is built from two planes
+// containing the line w ∨ z: an internal thread (w, E, T) with w an endpoint
+// of E, or an internal intersection of the E-planes of two edges at w.
 std::optional<std::size_t> on_line_to_z(const scene::Scene& s, const Symbolic_vertex& v) {
   const auto& i = v.ids;
   if (v.kind == K::internal_thread && (s.edges[i[1]][0] == i[0] || s.edges[i[1]][1] == i[0])) return i[0];
@@ -47,14 +46,17 @@ Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v) {
     if (edge_of_triangle(s, v.ids[0], v.ids[2])) return Symbolic_vertex::intersection(v.ids[0], v.ids[1]);
     if (edge_of_triangle(s, v.ids[1], v.ids[2])) return Symbolic_vertex::intersection(v.ids[1], v.ids[0]);
   }
+  if (const auto w = on_line_to_z(s, v)) return Symbolic_vertex::plumb(*w, v.ids[2]);
   return v;
 }
 
 bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& given, const Symbolic_plane& p, bool z_euclidean) {
   const Symbolic_vertex v = canonical(s, given);
-  if (const auto w = on_line_to_z(s, v)) {
-    if (p.kind == Symbolic_plane::Kind::P && p.id == *w) return true;
-    if (p.kind == Symbolic_plane::Kind::E && (s.edges[p.id][0] == *w || s.edges[p.id][1] == *w)) return true;
+  if (v.kind == K::plumb) {
+    // On the line w ∨ z, which lies in P(w) and in the E-plane of every edge at w.
+    const std::size_t w = v.ids[0];
+    if (p.kind == Symbolic_plane::Kind::P && p.id == w) return true;
+    if (p.kind == Symbolic_plane::Kind::E && (s.edges[p.id][0] == w || s.edges[p.id][1] == w)) return true;
   }
   switch (p.kind) {
     case Symbolic_plane::Kind::P:
@@ -84,6 +86,7 @@ bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& given, con
         case K::internal_intersection:
         case K::internal_thread: return v.ids[2] == p.id;
         case K::axis: return v.ids[0] == p.id;
+        case K::plumb: return v.ids[1] == p.id;
       }
   }
   return false;

@@ -33,6 +33,7 @@ Point4<R> Scene_geometry<R>::point(const Symbolic_vertex& v) const {
     case K::internal_intersection: return meet(plane({P::E, i[0]}), plane({P::E, i[1]}), plane({P::T, i[2]}));
     case K::internal_thread: return meet(plane({P::P, i[0]}), plane({P::E, i[1]}), plane({P::T, i[2]}));
     case K::axis: return meet(join(x_, z_), plane({P::T, i[0]}));
+    case K::plumb: return meet(join(vertex(i[0]), z_), plane({P::T, i[1]}));
   }
   return {};
 }

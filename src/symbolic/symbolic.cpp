@@ -26,6 +26,7 @@ std::string to_string(const Symbolic_vertex& v) {
     case Symbolic_vertex::Kind::internal_intersection: return "SV(E" + s(i[0]) + ",E" + s(i[1]) + ",T" + s(i[2]) + ")";
     case Symbolic_vertex::Kind::internal_thread: return "SV(P" + s(i[0]) + ",E" + s(i[1]) + ",T" + s(i[2]) + ")";
     case Symbolic_vertex::Kind::axis: return "SV(L,T" + s(i[0]) + ")";
+    case Symbolic_vertex::Kind::plumb: return "SV(v" + s(i[0]) + ",T" + s(i[1]) + ")";
   }
   return "SV(?)";
 }

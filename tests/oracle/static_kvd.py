@@ -261,6 +261,7 @@ def h(p):
 #   ("in", e, E)           SV(ee,EE)        intersection: scene edge e meets E(E)
 #   ("ith", V, E, T)       SV(PV,EE,TT)     internal thread
 #   ("iin", E1, E2, T)     SV(EE1,EE2,TT)   internal intersection, E1 < E2
+#   ("pl", w, T)           SV(vw,TT)        the line w v z meets T (plumb point)
 # Sides: ("e", e) SE(ee); ("PT", V, T) SE(PV,TT); ("ET", E, T) SE(EE,TT).
 
 def sv_name(v):
@@ -275,6 +276,8 @@ def sv_name(v):
         return "SV(P%d,E%d,T%d)" % v[1:]
     if k == "iin":
         return "SV(E%d,E%d,T%d)" % v[1:]
+    if k == "pl":
+        return "SV(v%d,T%d)" % v[1:]
     raise AssertionError(v)
 
 
@@ -298,7 +301,6 @@ class Oracle:
         self.planes = {}
         self.coords = {}     # symbolic vertex -> Euclidean point
         self.signs = 0
-        self.z_line_cases = set()  # (vertex, plane) decided ON by the z-line rule
         for v, p in enumerate(scene.pos):
             self.coords[("v", v)] = p
 
@@ -330,16 +332,11 @@ class Oracle:
         if k == "in":
             return {("E", v[2]), ("E", v[1])} | {("T", t) for t in s.edge_triangles[v[1]]}
         if k == "ith":
-            on = {("P", v[1]), ("E", v[2]), ("T", v[3])}
-            if v[1] in s.edges[v[2]]:
-                on |= self.on_z_line(v[1])
-            return on
+            return {("P", v[1]), ("E", v[2]), ("T", v[3])}
         if k == "iin":
-            on = {("E", v[1]), ("E", v[2]), ("T", v[3])}
-            shared = set(s.edges[v[1]]) & set(s.edges[v[2]])
-            for w in shared:
-                on |= self.on_z_line(w)
-            return on
+            return {("E", v[1]), ("E", v[2]), ("T", v[3])}
+        if k == "pl":
+            return self.on_z_line(v[1]) | {("T", v[2])}
         raise AssertionError(v)
 
     def on_z_line(self, w):
@@ -360,8 +357,6 @@ class Oracle:
         if pl in self.on_by_construction(v):
             if f != 0:  # our own bookkeeping is wrong: never hide it
                 raise AssertionError("%s is on %s by construction but the value is %s" % (sv_name(v), plane_name(pl), f))
-            if v[0] in ("ith", "iin") and pl not in (("P", v[1]) if v[0] == "ith" else ("E", v[1]), ("E", v[2]), ("T", v[3])):
-                self.z_line_cases.add((sv_name(v), plane_name(pl)))
             return 0
         if f == 0:
             raise Degenerate("%s lies exactly on %s (value 0 at t = %s, not by construction)"
@@ -397,18 +392,32 @@ class Oracle:
             if kind == "E":
                 if i in self.s.tri_edges[T]:
                     raise Unsupported("SE(P%d,T%d) crosses the E-plane of its own triangle's edge e%d" % (V, T, i))
-                return ("ith", V, i, T)
+                return self.plumb(("ith", V, i, T))
             raise Unsupported("side %s crossed by %s" % (se_name(side), plane_name(pl)))
         if side[0] == "ET":
             E, T = side[1], side[2]
             if kind == "P":
-                return ("ith", i, E, T)
+                return self.plumb(("ith", i, E, T))
             if kind == "E":
                 if i in self.s.tri_edges[T]:
                     raise Unsupported("SE(E%d,T%d) crosses the E-plane of its own triangle's edge e%d" % (E, T, i))
-                return ("iin", min(E, i), max(E, i), T)
+                return self.plumb(("iin", min(E, i), max(E, i), T))
             raise Unsupported("side %s crossed by %s" % (se_name(side), plane_name(pl)))
         raise AssertionError(side)
+
+    def plumb(self, v):
+        """The one name of an internal vertex built from two planes through
+        the line w v z of a scene vertex w: SV(Pw,E,T) with w an endpoint of
+        E, or SV(E1,E2,T) with E1, E2 sharing w, both are where that line
+        meets T."""
+        s = self.s
+        if v[0] == "ith" and v[1] in s.edges[v[2]]:
+            return ("pl", v[1], v[3])
+        if v[0] == "iin":
+            shared = set(s.edges[v[1]]) & set(s.edges[v[2]])
+            if shared:
+                return ("pl", shared.pop(), v[3])
+        return v
 
     def cut_side(self, pl, tri):
         kind, i = pl
@@ -685,9 +694,7 @@ def main(argv):
         return 3
     sys.stdout.write(describe(root))
     if stats:
-        sys.stderr.write("%s: %d nodes, %d signs; ON by the z-line rule: %s\n"
-                         % (path, o.node_count, o.signs,
-                            " ".join("%s/%s" % c for c in sorted(o.z_line_cases)) or "none"))
+        sys.stderr.write("%s: %d nodes, %d signs\n" % (path, o.node_count, o.signs))
     return 0
 
 

@@ -33,7 +33,11 @@ struct Symbolic_edge {
 // The five vertices of thesis 5.1.3, plus the one a Euclidean decomposition
 // point needs (DESIGN.md section 4): with z Euclidean every P-plane contains
 // the line L = x ∨ z, and L meets a triangle's plane in a vertex lying on all
-// P-planes at once.
+// P-planes at once. And one name for the point where the line w ∨ z through
+// a scene vertex w meets a triangle's plane: P(w) and the E-plane of every
+// edge at w all contain that line, so an internal thread (w, E, T) with w on
+// E and an internal intersection (E1, E2, T) of two edges at w are that same
+// point; `canonical` (incidence.hpp) renames them to plumb(w, T).
 struct Symbolic_vertex {
   enum class Kind {
     endpoint,               // (v)
@@ -41,7 +45,8 @@ struct Symbolic_vertex {
     thread,                 // (e, V): scene edge e meets the P-plane of vertex V
     internal_intersection,  // (E1, E2, T), E1 < E2: two E-planes meet the plane of T
     internal_thread,        // (V, E, T): a P-plane and an E-plane meet the plane of T
-    axis                    // (T): L = x ∨ z meets the plane of T
+    axis,                   // (T): L = x ∨ z meets the plane of T
+    plumb                   // (w, T): the line w ∨ z through scene vertex w meets the plane of T
   };
   Kind kind;
   std::array<std::size_t, 3> ids{};
@@ -57,6 +62,7 @@ struct Symbolic_vertex {
     return {Kind::internal_thread, {v, e, t}};
   }
   static Symbolic_vertex axis(std::size_t t) { return {Kind::axis, {t, 0, 0}}; }
+  static Symbolic_vertex plumb(std::size_t w, std::size_t t) { return {Kind::plumb, {w, t, 0}}; }
 };
 
 // An edge fragment (SV1, SV2, SE), and a triangle fragment: corners and the
