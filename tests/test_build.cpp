@@ -96,6 +96,169 @@ TEST_CASE("two triangles in separate P-slabs give the hand-checked tree", "[buil
   CHECK(build_at(kvd::Exact_kernel(), load("two-slabs.json"), 0).describe() == expected);
 }
 
+// The next three trees are of scenes with ties that the symbolic
+// perturbation breaks (shared y-coordinates, an edge parallel to z). Each was
+// checked against tests/oracle/static_kvd.py, an independent implementation
+// of the construction in exact rationals, run on the same scene with every
+// vertex i moved by an explicit 2^-k (i+1, (i+1)^2, (i+1)^3) for k from 12 to
+// 100: it gives these trees line for line (CTest static_kvd_oracle).
+
+TEST_CASE("the thesis's three-triangle cycle gives the expected tree", "[build]") {
+  // Triangles a (T0), b (T1), c (T2) overlap cyclically; the scene's order
+  // (seed 0) puts c first, so P(6) (v6, y = 5) is the root and P(7) (v7,
+  // y = -1) its left child. v3 = (5, -1, 1) has the same y as v7: the
+  // perturbation moves v_i by (i+1)^2 ε in y, so y(v3) + 16ε < y(v7) + 64ε
+  // and P(3) goes left of P(7). The cycle is broken by the E-cuts of c, E(6)
+  // and E(8), which split a and b into fragments that can be ordered.
+  const std::string expected =
+    "P(6) [SV(v6)]\n"
+    "  - P(7) [SV(v7)]\n"
+    "    - P(3) [SV(v3)]\n"
+    "      + E(3) [SV(v3) SV(e3,P7) SE(e3)]\n"
+    "        + E(5) [SV(e5,P7) SV(v3) SE(e5)]\n"
+    "          + T(1) [SV(v3) SE(e3), SV(e3,P7) SE(P7,T1), SV(e5,P7) SE(e5)]\n"
+    "    + P(8) [SV(v8)]\n"
+    "      - E(6) [SV(e6,P8) SV(v7) SE(e6)]\n"
+    "        - P(0) [SV(v0)]\n"
+    "          + E(0) [SV(v0) SV(e0,E6) SE(e0)]\n"
+    "            + E(2) [SV(e2,E6) SV(v0) SE(e2)]\n"
+    "              + T(0) [SV(v0) SE(e0), SV(e0,E6) SE(E6,T0), SV(e2,E6) SE(e2)]\n"
+    "        + E(7) [SV(v7) SV(v8) SE(e7)]\n"
+    "          - P(1) [SV(v1)]\n"
+    "            - E(0) [SV(e0,E7) SV(v1) SE(e0)]\n"
+    "              - E(3) [SV(e3,P7) SV(e3,E0) SE(e3)]\n"
+    "                + E(5) [SV(e5,E0) SV(e5,P7) SE(e5)]\n"
+    "                  + T(1) [SV(e3,P7) SE(e3), SV(e3,E0) SE(E0,T1), SV(e5,E0) SE(e5), SV(e5,P7) SE(P7,T1)]\n"
+    "              + T(0) [SV(e0,E7) SE(e0), SV(v1) SE(P1,T0), SV(P1,E7,T0) SE(E7,T0)]\n"
+    "                + E(3) [SV(e3,E0) SV(e3,P1) SE(e3)]\n"
+    "                  + E(5) [SV(e5,P1) SV(e5,E0) SE(e5)]\n"
+    "                    + T(1) [SV(e3,E0) SE(e3), SV(e3,P1) SE(P1,T1), SV(e5,P1) SE(e5), SV(e5,E0) SE(E0,T1)]\n"
+    "            + P(2) [SV(v2)]\n"
+    "              - E(1) [SV(v1) SV(v2) SE(e1)]\n"
+    "                - E(3) [SV(e3,E1) SV(e3,P2) SE(e3)]\n"
+    "                  + E(5) [SV(e5,P2) SV(e5,E1) SE(e5)]\n"
+    "                    + T(1) [SV(e3,E1) SE(e3), SV(e3,P2) SE(P2,T1), SV(e5,P2) SE(e5), SV(e5,E1) SE(E1,T1)]\n"
+    "                + E(2) [SV(v2) SV(e2,E7) SE(e2)]\n"
+    "                  + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,E7) SE(E7,T0), SV(P1,E7,T0) SE(P1,T0)]\n"
+    "                    + E(3) [SV(e3,P1) SV(e3,E1) SE(e3)]\n"
+    "                      + E(5) [SV(e5,E1) SV(e5,P1) SE(e5)]\n"
+    "                        + T(1) [SV(e3,P1) SE(e3), SV(e3,E1) SE(E1,T1), SV(e5,E1) SE(e5), SV(e5,P1) SE(P1,T1)]\n"
+    "              + P(5) [SV(v5)]\n"
+    "                - E(3) [SV(e3,P2) SV(e3,P5) SE(e3)]\n"
+    "                  + E(5) [SV(v5) SV(e5,P2) SE(e5)]\n"
+    "                    + T(1) [SV(e3,P2) SE(e3), SV(e3,P5) SE(P5,T1), SV(v5) SE(e5), SV(e5,P2) SE(P2,T1)]\n"
+    "                + E(3) [SV(e3,P5) SV(e3,P8) SE(e3)]\n"
+    "                  + E(4) [SV(e4,P8) SV(v5) SE(e4)]\n"
+    "                    + T(1) [SV(e3,P5) SE(e3), SV(e3,P8) SE(P8,T1), SV(e4,P8) SE(e4), SV(v5) SE(P5,T1)]\n"
+    "          + T(2) [SV(e6,P8) SE(e6), SV(v7) SE(e7), SV(v8) SE(P8,T2)]\n"
+    "            + E(0) [SV(e0,E6) SV(e0,E7) SE(e0)]\n"
+    "              + E(2) [SV(e2,E7) SV(e2,E6) SE(e2)]\n"
+    "                + T(0) [SV(e0,E6) SE(e0), SV(e0,E7) SE(E7,T0), SV(e2,E7) SE(e2), SV(e2,E6) SE(E6,T0)]\n"
+    "      + E(6) [SV(v6) SV(e6,P8) SE(e6)]\n"
+    "        - P(4) [SV(v4)]\n"
+    "          - E(3) [SV(e3,E6) SV(v4) SE(e3)]\n"
+    "            + E(4) [SV(v4) SV(e4,E6) SE(e4)]\n"
+    "              + T(1) [SV(e3,E6) SE(e3), SV(v4) SE(e4), SV(e4,E6) SE(E6,T1)]\n"
+    "        + E(8) [SV(v8) SV(v6) SE(e8)]\n"
+    "          - E(3) [SV(e3,P8) SV(e3,E8) SE(e3)]\n"
+    "            + E(4) [SV(e4,E8) SV(e4,P8) SE(e4)]\n"
+    "              + T(1) [SV(e3,P8) SE(e3), SV(e3,E8) SE(E8,T1), SV(e4,E8) SE(e4), SV(e4,P8) SE(P8,T1)]\n"
+    "          + T(2) [SV(v6) SE(e6), SV(e6,P8) SE(P8,T2), SV(v8) SE(e8)]\n"
+    "            - E(3) [SV(e3,E8) SV(e3,E6) SE(e3)]\n"
+    "              + E(4) [SV(e4,E6) SV(e4,E8) SE(e4)]\n"
+    "                + T(1) [SV(e3,E8) SE(e3), SV(e3,E6) SE(E6,T1), SV(e4,E6) SE(e4), SV(e4,E8) SE(E8,T1)]\n";
+  const auto t = build_at(kvd::Exact_kernel(), load("cycle3.json"), 0);
+  CHECK(t.describe() == expected);
+  const auto st = t.statistics();
+  CHECK(st.p_nodes == 9);
+  CHECK(st.nodes == 56);
+}
+
+TEST_CASE("two triangles with shared heights give the expected tree", "[build]") {
+  // The static floor (T0) comes first; the mover (T1) lies wholly on the
+  // negative side of T(0) and of the floor's P- and E-cuts it meets, so its
+  // cuts repeat the single-triangle pattern under T(0). Shared y-values
+  // between the floor and the mover are ordered by the perturbation.
+  const std::string expected =
+    "P(0) [SV(v0)]\n"
+    "  + P(1) [SV(v1)]\n"
+    "    - E(0) [SV(v0) SV(v1) SE(e0)]\n"
+    "      + E(2) [SV(e2,P1) SV(v0) SE(e2)]\n"
+    "        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]\n"
+    "    + P(2) [SV(v2)]\n"
+    "      - E(1) [SV(v1) SV(v2) SE(e1)]\n"
+    "        + E(2) [SV(v2) SV(e2,P1) SE(e2)]\n"
+    "          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]\n"
+    "            - P(3) [SV(v3)]\n"
+    "              + P(4) [SV(v4)]\n"
+    "                - E(3) [SV(v3) SV(v4) SE(e3)]\n"
+    "                  + E(5) [SV(e5,P4) SV(v3) SE(e5)]\n"
+    "                    + T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]\n"
+    "                + P(5) [SV(v5)]\n"
+    "                  - E(4) [SV(v4) SV(v5) SE(e4)]\n"
+    "                    + E(5) [SV(v5) SV(e5,P4) SE(e5)]\n"
+    "                      + T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,P4) SE(P4,T1)]\n";
+  CHECK(build_at(kvd::Exact_kernel(), load("two-triangles.json"), 0).describe() == expected);
+}
+
+TEST_CASE("a scene with an edge parallel to z gives the expected tree", "[build]") {
+  // Its E-plane a ∨ b ∨ z vanishes identically; every sign against it is the
+  // first non-zero ε-coefficient (rule 4).
+  const std::string expected =
+    "P(0) [SV(v0)]\n"
+    "  - P(8) [SV(v8)]\n"
+    "    + E(7) [SV(e7,P0) SV(v8) SE(e7)]\n"
+    "      - E(8) [SV(v8) SV(e8,P0) SE(e8)]\n"
+    "        - T(2) [SV(e7,P0) SE(e7), SV(v8) SE(e8), SV(e8,P0) SE(P0,T2)]\n"
+    "  + P(1) [SV(v1)]\n"
+    "    - E(0) [SV(v0) SV(v1) SE(e0)]\n"
+    "      - E(2) [SV(e2,P1) SV(v0) SE(e2)]\n"
+    "        - T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]\n"
+    "          + T(2) [SV(v0,T2) SE(E0,T2), SV(v1,T2) SE(P1,T2), SV(P1,E2,T2) SE(E2,T2)]\n"
+    "        + E(7) [SV(e7,P1) SV(e7,P0) SE(e7)]\n"
+    "          - T(2) [SV(e7,P1) SE(e7), SV(e7,P0) SE(P0,T2), SV(v0,T2) SE(E2,T2), SV(P1,E2,T2) SE(P1,T2)]\n"
+    "      + E(8) [SV(e8,P0) SV(e8,P1) SE(e8)]\n"
+    "        - T(2) [SV(v0,T2) SE(P0,T2), SV(e8,P0) SE(e8), SV(e8,P1) SE(P1,T2), SV(v1,T2) SE(E0,T2)]\n"
+    "    + P(2) [SV(v2)]\n"
+    "      - E(1) [SV(v1) SV(v2) SE(e1)]\n"
+    "        - E(2) [SV(v2) SV(e2,P1) SE(e2)]\n"
+    "          - T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]\n"
+    "            + E(7) [SV(e7,E1) SV(e7,E2) SE(e7)]\n"
+    "              - T(2) [SV(e7,E1) SE(e7), SV(e7,E2) SE(E2,T2), SV(P1,E2,T2) SE(P1,T2), SV(v1,T2) SE(E1,T2)]\n"
+    "          + E(7) [SV(e7,E2) SV(e7,P1) SE(e7)]\n"
+    "            - T(2) [SV(e7,E2) SE(e7), SV(e7,P1) SE(P1,T2), SV(P1,E2,T2) SE(E2,T2)]\n"
+    "        + E(7) [SV(e7,P2) SV(e7,E1) SE(e7)]\n"
+    "          - E(8) [SV(e8,P1) SV(e8,P2) SE(e8)]\n"
+    "            - T(2) [SV(e7,P2) SE(e7), SV(e7,E1) SE(E1,T2), SV(v1,T2) SE(P1,T2), SV(e8,P1) SE(e8), SV(e8,P2) SE(P2,T2)]\n"
+    "      + P(3) [SV(v3)]\n"
+    "        - E(7) [SV(e7,P3) SV(e7,P2) SE(e7)]\n"
+    "          - E(8) [SV(e8,P2) SV(e8,P3) SE(e8)]\n"
+    "            - T(2) [SV(e7,P3) SE(e7), SV(e7,P2) SE(P2,T2), SV(e8,P2) SE(e8), SV(e8,P3) SE(P3,T2)]\n"
+    "        + P(4) [SV(v4)]\n"
+    "          - E(3) [SV(v3) SV(v4) SE(e3)]\n"
+    "            - E(5) [SV(e5,P4) SV(v3) SE(e5)]\n"
+    "              - T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]\n"
+    "            + E(7) [SV(e7,P4) SV(e7,P3) SE(e7)]\n"
+    "              - E(8) [SV(e8,P3) SV(e8,P4) SE(e8)]\n"
+    "                - T(2) [SV(e7,P4) SE(e7), SV(e7,P3) SE(P3,T2), SV(e8,P3) SE(e8), SV(e8,P4) SE(P4,T2)]\n"
+    "          + P(5) [SV(v5)]\n"
+    "            - E(4) [SV(v4) SV(v5) SE(e4)]\n"
+    "              - E(5) [SV(v5) SV(e5,P4) SE(e5)]\n"
+    "                - T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,P4) SE(P4,T1)]\n"
+    "              + E(7) [SV(e7,P5) SV(e7,P4) SE(e7)]\n"
+    "                - E(8) [SV(e8,P4) SV(e8,P5) SE(e8)]\n"
+    "                  - T(2) [SV(e7,P5) SE(e7), SV(e7,P4) SE(P4,T2), SV(e8,P4) SE(e8), SV(e8,P5) SE(P5,T2)]\n"
+    "            + P(6) [SV(v6)]\n"
+    "              - E(7) [SV(e7,P6) SV(e7,P5) SE(e7)]\n"
+    "                - E(8) [SV(e8,P5) SV(v6) SE(e8)]\n"
+    "                  - T(2) [SV(v6) SE(P6,T2), SV(e7,P6) SE(e7), SV(e7,P5) SE(P5,T2), SV(e8,P5) SE(e8)]\n"
+    "              + P(7) [SV(v7)]\n"
+    "                - E(6) [SV(v6) SV(v7) SE(e6)]\n"
+    "                  - E(7) [SV(v7) SV(e7,P6) SE(e7)]\n"
+    "                    - T(2) [SV(v6) SE(e6), SV(v7) SE(e7), SV(e7,P6) SE(P6,T2)]\n";
+  CHECK(build_at(kvd::Exact_kernel(), load("degenerate-vertical-edge.json"), 0).describe() == expected);
+}
+
 TEST_CASE("structural comparison names the first difference", "[build][compare]") {
   const kvd::Exact_kernel k;
   scene::Load_options o;

@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """An independent oracle for the static KVD construction (thesis 5.3.3).
 
-Usage: static_kvd.py SCENE.json [--time T] [--seed S] [--stats]
+Usage: static_kvd.py SCENE.json [--time T] [--seed S] [--perturb K] [--stats]
+
+--perturb K moves vertex i by 2^-K (i+1, (i+1)^2, (i+1)^3) before building:
+for a static scene and K large enough, the tree must be the library's tree
+of the unperturbed scene, whose ties the symbolic perturbation breaks.
        static_kvd.py --self-check
 
 Prints the KVD of the scene at the instant T (default: the scene's start) in
@@ -120,7 +124,7 @@ def shuffled_ids(n, seed):
 
 
 class Scene:
-    def __init__(self, doc, time=None, seed=None):
+    def __init__(self, doc, time=None, seed=None, perturb=None):
         if doc.get("format") != "kvd-scene/1":
             raise ValueError("not a kvd-scene/1 document")
         self.t = number(doc.get("time", {}).get("start", 0)) if time is None else time
@@ -152,6 +156,12 @@ class Scene:
             for tri in o["triangles"]:
                 self.triangles.append(tuple(first_v + i for i in tri))
                 self.tri_moving.append(moving)
+
+        if perturb is not None:
+            # An explicit ε = 2^-perturb on the library's moment curve: vertex
+            # i moves by ε (i+1, (i+1)^2, (i+1)^3) (DESIGN.md section 4).
+            eps = Fraction(1, 2 ** perturb)
+            self.pos = [tuple(p[k] + eps * (i + 1) ** (k + 1) for k in range(3)) for i, p in enumerate(self.pos)]
 
         # Edges in order of first appearance: (i,j), (j,k), (k,i).
         self.edges, self.tri_edges, edge_id = [], [], {}
@@ -661,7 +671,7 @@ def main(argv):
     if args == ["--self-check"]:
         self_check()
         return 0
-    path, time, seed, stats = None, None, None, False
+    path, time, seed, stats, perturb = None, None, None, False, None
     i = 0
     while i < len(args):
         a = args[i]
@@ -671,6 +681,9 @@ def main(argv):
         elif a == "--seed" and i + 1 < len(args):
             seed = int(args[i + 1])
             i += 2
+        elif a == "--perturb" and i + 1 < len(args):
+            perturb = int(args[i + 1])
+            i += 2
         elif a == "--stats":
             stats = True
             i += 1
@@ -678,15 +691,15 @@ def main(argv):
             path = a
             i += 1
         else:
-            sys.stderr.write("usage: static_kvd.py SCENE.json [--time T] [--seed S] [--stats] | --self-check\n")
+            sys.stderr.write("usage: static_kvd.py SCENE.json [--time T] [--seed S] [--perturb K] [--stats] | --self-check\n")
             return 2
     if path is None:
-        sys.stderr.write("usage: static_kvd.py SCENE.json [--time T] [--seed S] [--stats] | --self-check\n")
+        sys.stderr.write("usage: static_kvd.py SCENE.json [--time T] [--seed S] [--perturb K] [--stats] | --self-check\n")
         return 2
     with open(path, encoding="utf-8") as f:
         doc = json.load(f, parse_float=Fraction, parse_int=int)
     try:
-        o = Oracle(Scene(doc, time, seed))
+        o = Oracle(Scene(doc, time, seed, perturb))
         root = o.build()
         verify(o, root)
     except (Degenerate, Unsupported) as e:
