@@ -147,24 +147,24 @@ TEST_CASE("a collision stops the simulation at its exact time", "[kinetic]") {
 }
 
 namespace {
-scene::Scene mixed_scene(std::uint64_t seed, std::size_t triangles) {
+scene::Scene mixed_scene(std::uint64_t seed, std::size_t triangles, int degree = 2) {
   scene::Uniform_params p;
   p.triangles = triangles;
   p.moving = mpq_class(1, 2);
-  p.degree = 2;
+  p.degree = degree;
   p.seed = seed;
   return scene::read_scene(scene::write_scene(scene::uniform_density(p)), "generated");
 }
 }  // namespace
 
 TEST_CASE("random mixed scenes validate at every batch", "[kinetic][property]") {
-  // Static and moving triangles mixed, quadratic motions, several seeds, the
+  // Static and moving triangles mixed, linear and quadratic motions, several seeds, the
   // reduced set: every batch is validated against fresh builds; lower bounds
   // on what happened keep a simulation that does nothing from passing.
   std::size_t failures = 0, batches = 0, simultaneous = 0, changed = 0;
   kinetic::Type_counts types{};
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-    const auto sim = kinetic::simulate(k, mixed_scene(seed, 12), with(reduced, 120));
+    const auto sim = kinetic::simulate(k, mixed_scene(seed, 12, 1 + static_cast<int>(seed % 2)), with(reduced, 120));
     INFO("seed " << seed);
     check_increasing_and_valid(sim);
     failures += sim.failures;
