@@ -134,7 +134,7 @@ TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulat
   for (const char* opts : {" --certificates full --queue heap", " --queue heap", " --certificates full"}) {
     const Run other = run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --json" + opts);
     CHECK(other.status == 0);
-    CHECK(other.out.find("\"batch_count\": 3,") != std::string::npos);
+    CHECK(other.out.find("\"batches\": 3,") != std::string::npos);
     CHECK(other.out.find("\"time_reached_exact\": \"4\"") != std::string::npos);
   }
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --certificates some").status == 2);

@@ -39,9 +39,9 @@ const char* const simulate_help =
     "  --epsilon E       that epsilon (default 1e-9 for double, 2^(-BITS/2) for mpfr)\n"
     "  --trace FILE      one JSON line per certificate failure (format in the README)\n"
     "  --list            one line per batch\n"
-    "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batches\": [{\"time\": EXACT,\n"
+    "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL}, ...],\n"
-    "           \"events\": N, \"batch_count\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
+    "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
     "           \"construction_ms\": X, \"update_ms\": {\"average\", \"max\", \"stddev\"},\n"
@@ -137,14 +137,14 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const char* queue = o.queue == kinetic::Queue_kind::tree ? "tree" : "heap";
   if (json) {
     std::cout << "{\"kernel\": " << json_string(K::name) << ", \"certificate_set\": " << json_string(set)
-              << ", \"queue\": " << json_string(queue) << ", \"batches\": [";
+              << ", \"queue\": " << json_string(queue) << ", \"batch_list\": [";
     for (std::size_t i = 0; i < sim.batches.size(); ++i) {
       const auto& e = sim.batches[i];
       std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
                 << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failures()
                 << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
     }
-    std::cout << "], \"events\": " << sim.failures << ", \"batch_count\": " << sim.batches.size()
+    std::cout << "], \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
               << ", \"simultaneous_batches\": " << sim.simultaneous_batches
               << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
               << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
