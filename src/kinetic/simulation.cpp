@@ -45,8 +45,8 @@ class Simulator {
   using FT = typename K::FT;
 
 public:
-  Simulator(const K& k, const scene::Scene& s, const Options& o)
-      : k_(k), c_(k, s), oracle_(k, s), o_(o), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
+  Simulator(const K& k, const scene::Scene& s, const Options& o, Observer<K>* observer)
+      : k_(k), c_(k, s), oracle_(k, s), o_(o), observer_(observer), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
     if (s.end) limit_ = k.time(from_rational<FT>(*s.end));
     if (o.until) {
       const Time until = k.time(from_rational<FT>(*o.until));
@@ -78,6 +78,7 @@ public:
         after = tree::build(c_, *next, full() ? &evaluated_ : nullptr);
       } catch (const tree::Build_error& e) {
         sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + e.what() + colliding(batch);
+        if (observer_) observer_->batch(batch, true);
         if (o_.validate == Validation::end) before_last.emplace(now_, current_);  // current stays in force
         now_ = *next;
         break;
@@ -91,6 +92,7 @@ public:
       if (o_.validate == Validation::end) before_last.emplace(now_, std::move(current_));
       current_ = std::move(after);
       now_ = *next;
+      if (observer_) observer_->batch(batch, false);
       const auto cert_start = std::chrono::steady_clock::now();
       make_certificates();
       batch.certificate_seconds = seconds_since(cert_start);
@@ -118,6 +120,7 @@ private:
       }
       queue_->set(i, certs_[i].node, std::move(first));
     }
+    if (observer_) observer_->in_force(now_, certs_);
   }
 
   // The first sign-changing root of q after now, cached per polynomial.
@@ -151,6 +154,7 @@ private:
   const predicates::Classifier<K> c_;
   const predicates::Classifier<K> oracle_;  // for validation only
   const Options& o_;
+  Observer<K>* observer_;
   std::unique_ptr<Event_queue<K>> queue_;
   Time now_;
   std::optional<Time> limit_;
@@ -164,12 +168,13 @@ private:
 }  // namespace
 
 template <class K>
-Simulation<typename K::Time> simulate(const K& k, const scene::Scene& s, const Options& options) {
-  return Simulator<K>(k, s, options).run();
+Simulation<typename K::Time> simulate(const K& k, const scene::Scene& s, const Options& options,
+                                      Observer<K>* observer) {
+  return Simulator<K>(k, s, options, observer).run();
 }
 
 #define KVD_INSTANTIATE_SIMULATE(K) \
-  template Simulation<K::Time> simulate<K>(const K&, const scene::Scene&, const Options&);
+  template Simulation<K::Time> simulate<K>(const K&, const scene::Scene&, const Options&, Observer<K>*);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SIMULATE)
 
 }  // namespace kvd::kinetic

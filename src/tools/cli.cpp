@@ -53,6 +53,13 @@ const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& com
   return *view;
 }
 
+kinetic::Validation validation_option(const std::string& command, const std::string& value) {
+  if (value == "every") return kinetic::Validation::every;
+  if (value == "end") return kinetic::Validation::end;
+  if (value == "none") return kinetic::Validation::none;
+  throw Usage_error("kvd " + command + ": --validate expects every, end or none");
+}
+
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text) {
   std::string why;
   const auto q = scene::parse_exact_number(text, why);

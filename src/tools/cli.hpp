@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
 
@@ -81,6 +82,9 @@ std::array<mpq_class, 3> point_option(const std::string& command, const std::str
 // rename, so that the file is either complete or untouched.
 void write_atomically(const std::string& command, const std::string& path, const std::string& text);
 
+// every, end or none, given to --validate.
+kinetic::Validation validation_option(const std::string& command, const std::string& value);
+
 // BITS of a --kernel mpfr:BITS option, between 2 and 65536.
 unsigned mpfr_bits(const std::string& command, const std::string& bits);
 
@@ -115,5 +119,6 @@ int build(Args& args);
 int order(Args& args);
 int render(Args& args);
 int simulate(Args& args);
+int certify(Args& args);
 
 }  // namespace kvd::cli

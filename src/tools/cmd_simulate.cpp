@@ -216,13 +216,8 @@ int simulate(Args& args) {
       if (v == "tree") o.queue = kinetic::Queue_kind::tree;
       else if (v == "heap") o.queue = kinetic::Queue_kind::heap;
       else throw Usage_error("kvd simulate: --queue expects tree or heap");
-    } else if (a == "--validate") {
-      const std::string& v = args.value(a);
-      if (v == "every") o.validate = kinetic::Validation::every;
-      else if (v == "end") o.validate = kinetic::Validation::end;
-      else if (v == "none") o.validate = kinetic::Validation::none;
-      else throw Usage_error("kvd simulate: --validate expects every, end or none");
-    } else if (!sa.take(args, a)) args.unknown(a);
+    } else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
+    else if (!sa.take(args, a)) args.unknown(a);
   }
   const scene::Scene s = sa.load_scene("simulate");
   o.progress = [](std::size_t batches, std::size_t failures) {

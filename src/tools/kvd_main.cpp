@@ -21,7 +21,8 @@ const char* const usage =
     "  build SCENE    build the KVD at an instant and print its statistics\n"
     "  order SCENE    list triangle fragments back to front from a viewpoint\n"
     "  render SCENE   paint the decomposition from a viewpoint (SVG or PNG)\n"
-    "  simulate SCENE run the kinetic KVD (full certificates, exact events)\n"
+    "  simulate SCENE run the kinetic KVD (exact events, symbolic batches)\n"
+    "  certify SCENE  write an event-order certificate of the exact simulation\n"
     "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
     if (command == "order") return kvd::cli::order(args);
     if (command == "render") return kvd::cli::render(args);
     if (command == "simulate") return kvd::cli::simulate(args);
+    if (command == "certify") return kvd::cli::certify(args);
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {

@@ -76,11 +76,24 @@ struct Options {
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };
 
+// Sees what a simulation relies on, in order: the certificates put in force
+// at the start, then for every batch the batch (before its update) and the
+// certificates in force after it. The batch at which triangles meet comes
+// with collision = true and is the last call.
+template <class K>
+class Observer {
+public:
+  virtual ~Observer() = default;
+  virtual void in_force(const typename K::Time& now, const std::vector<Certificate<typename K::Poly>>& certs) = 0;
+  virtual void batch(const Batch<typename K::Time>& b, bool collision) = 0;
+};
+
 // Runs from the scene's start until its end or `until`, no events are left,
 // max_events, or a collision (a fragment crossing a triangle's plane when the
 // tree is rebuilt: the triangles meet).
 template <class K>
-Simulation<typename K::Time> simulate(const K& kernel, const scene::Scene& s, const Options& options);
+Simulation<typename K::Time> simulate(const K& kernel, const scene::Scene& s, const Options& options,
+                                      Observer<K>* observer = nullptr);
 
 // A rational strictly between a < b.
 mpq_class rational_between(const Exact_time& a, const Exact_time& b);

@@ -1,0 +1,74 @@
+#include "kvd/kinetic/event_order.hpp"
+
+#include <stdexcept>
+
+namespace kvd::kinetic {
+
+namespace {
+
+// [lo, hi] around t holding no other root of p: t's own isolating interval
+// (for a factor of p) refined until Descartes' rule, exact at 1, counts one
+// root of p's square-free part inside and none at the ends.
+std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_time& t) {
+  const zpoly::ZPoly s = zpoly::div_exact(p, zpoly::gcd(p, zpoly::derivative(p)));
+  for (;;) {
+    if (t.is_rational()) return {t.rational(), t.rational()};
+    if (zpoly::sign_at(s, t.lower()) != 0 && zpoly::sign_at(s, t.upper()) != 0 &&
+        zpoly::descartes_bound(s, t.lower(), t.upper()) == 1)
+      return {t.lower(), t.upper()};
+    t.refine();
+  }
+}
+
+std::string key(const std::string& features, const zpoly::ZPoly& p) {
+  std::string k = features;
+  for (const auto& c : p) k += " " + c.get_str();
+  return k;
+}
+
+}  // namespace
+
+std::size_t Event_order_recorder::id(Certificate_type type, const std::string& features, const zpoly::ZPoly& p) {
+  const auto [it, fresh] = ids_.try_emplace(key(features, p), order_.certificates.size());
+  if (fresh) order_.certificates.push_back({type, features, p});
+  return it->second;
+}
+
+void Event_order_recorder::in_force(const Exact_time&, const std::vector<Certificate<Exact_kernel::Poly>>& certs) {
+  current_.clear();
+  std::vector<std::size_t> active;
+  for (const auto& c : certs)
+    for (const auto& q : c.polys) {
+      // to_zpoly scales by a positive rational: still positive where in force.
+      const std::size_t i = id(c.type, c.nodes, zpoly::to_zpoly(q));
+      current_[c.nodes].push_back(i);
+      active.push_back(i);
+    }
+  order_.intervals.push_back(std::move(active));
+}
+
+void Event_order_recorder::batch(const Batch<Exact_time>& b, bool collision) {
+  bool first = true;
+  for (const Failure& f : b.failing) {
+    const auto it = current_.find(f.nodes);
+    if (it == current_.end()) throw std::logic_error("event of a certificate not in force: " + f.nodes);
+    // The certificate's polynomial that vanishes at the batch time.
+    const Event_order::Entry* entry = nullptr;
+    std::size_t which = 0;
+    for (std::size_t i : it->second)
+      if (k_.sign_at(zpoly::to_poly(order_.certificates[i].polynomial), b.time) == 0) {
+        entry = &order_.certificates[i];
+        which = i;
+        break;
+      }
+    if (!entry) throw std::logic_error("no polynomial of " + f.nodes + " vanishes at its event");
+    const auto [lo, hi] = isolating(entry->polynomial, b.time);
+    int multiplicity = 0;
+    for (zpoly::ZPoly d = entry->polynomial; k_.sign_at(zpoly::to_poly(d), b.time) == 0; d = zpoly::derivative(d))
+      ++multiplicity;
+    order_.events.push_back({which, lo, hi, multiplicity, !first, collision});
+    first = false;
+  }
+}
+
+}  // namespace kvd::kinetic
