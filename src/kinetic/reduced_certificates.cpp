@@ -86,9 +86,9 @@ private:
       }
     }
     const Point4<P>& at = c_.point_poly(v);
-    nearest(at, y_, p_walls);
-    nearest(at, c_.motion().x(), e_walls);
-    nearest(at, c_.motion().z(), t_walls);
+    nearest(at, y_, p_walls, end_of_walk(y_, p_pencil()));
+    nearest(at, c_.motion().x(), e_walls, end_of_walk(c_.motion().x(), finite(c_.motion().z())));
+    nearest(at, c_.motion().z(), t_walls, end_of_walk(c_.motion().z(), false));
   }
 
   // Thesis 6.4.2 and 6.4.3: an edge fragment's endpoints. An intersection
@@ -108,7 +108,7 @@ private:
       const SV& other = end == f.a ? f.b : f.a;
       if (other.kind == SV::Kind::intersection)
         p_walls.push_back({p_cut(other), {Certificate_type::II, end, std::nullopt, other}});
-      nearest(c_.position(end), y_, p_walls);
+      nearest(c_.position(end), y_, p_walls, end_of_walk(y_, p_pencil()));
     }
   }
 
@@ -154,17 +154,34 @@ private:
     return it->second;
   }
 
-  // The walls nearest to point v along the line v + μ d on each side:
-  // μ = -dot(H, v) / dot(H, d) with v scaled to W >= 0. Walls parallel to d
-  // are never met; a wall through v is kept (its certificate is empty when
-  // v lies on it by construction).
-  void nearest(const Point4<P>& v, const Point4<P>& d, const std::vector<Wall>& walls) {
+  // Where the walk along v + μ d leaves space (the walk's end), if anywhere:
+  // at μ = ∞ when d is a direction, at μ = -v_W / d_W when d is a point; or
+  // never, when the walls form a pencil about a finite line or point (the
+  // P-cuts about L = x ∨ z, the E-cuts about a Euclidean z): the walk then
+  // goes round the pencil through μ = ∞, as the cell's walls do.
+  enum class End { at_infinity, at_point, none };
+  End end_of_walk(const Point4<P>& d, bool pencil) const {
+    if (pencil) return End::none;
+    return d[3].is_zero() ? End::at_infinity : End::at_point;
+  }
+  bool finite(const Point4<P>& p) const { return !p[3].is_zero(); }
+  bool p_pencil() const { return finite(c_.motion().x()) || finite(c_.motion().z()); }
+
+  // The walls nearest to point v on each side of it, walking along the line
+  // v + μ d: μ = -dot(H, v) / dot(H, d) with v scaled to W >= 0. Walls
+  // parallel to d are never met; a wall through v is kept (its certificate
+  // is empty when v lies on it by construction). The walk upwards goes from
+  // μ = 0 to +∞ and on from -∞ (unless it ended), the walk downwards from 0
+  // to -∞ and on from +∞, each until its end (proofs/certificates.md, 3).
+  void nearest(const Point4<P>& v, const Point4<P>& d, const std::vector<Wall>& walls, End end) {
     const int wv = v[3].is_zero() ? 1 : c_.lex_sign(v[3], now_);
     struct Hit {
       const Wall* wall;
       P f, g;
       int sg, side;  // side: the sign of μ
     };
+    // sign(μ_a - μ_b) = sign(f_b g_a - f_a g_b) · sign(g_a g_b)
+    auto compare = [&](const Hit& a, const Hit& b) { return c_.lex_sign(b.f * a.g - a.f * b.g, now_) * a.sg * b.sg; };
     std::vector<Hit> hits;
     for (const Wall& w : walls) {
       P f = dot(w.plane, v);
@@ -176,21 +193,32 @@ private:
       if (side == 0) emit(w.spec);
       else hits.push_back({&w, std::move(f), std::move(g), sg, side});
     }
-    for (int side : {-1, +1}) {
-      std::vector<const Hit*> best;
-      for (const Hit& h : hits) {
-        if (h.side != side) continue;
-        if (best.empty()) {
-          best.push_back(&h);
-          continue;
+    // The end of the walk at a point, as a hit: μ_end = -v_W / d_W.
+    std::optional<Hit> stop;
+    if (end == End::at_point) {
+      const int sg = c_.lex_sign(d[3], now_);
+      stop = Hit{nullptr, wv < 0 ? P(-v[3]) : v[3], d[3], sg, -c_.lex_sign(v[3], now_) * wv * sg};
+    }
+    for (int dir : {-1, +1}) {
+      // The walk in direction dir meets first the walls on its own side
+      // (nearest first), then, past ±∞, those on the other side (farthest
+      // first); a wall beyond the walk's end is never met.
+      auto reached = [&](const Hit& h) {
+        if (end == End::none) return true;
+        if (end == End::at_infinity || h.side != stop->side) return h.side == dir;
+        return compare(h, *stop) * dir < 0;  // before the end, on the end's own leg
+      };
+      for (int leg : {dir, -dir}) {
+        std::vector<const Hit*> best;
+        for (const Hit& h : hits) {
+          if (h.side != leg || !reached(h)) continue;
+          const int cmp = best.empty() ? -dir : compare(h, *best.front());
+          if (cmp * dir < 0) best.assign(1, &h);
+          else if (cmp == 0) best.push_back(&h);
         }
-        const Hit& b = *best.front();
-        // sign(μ_h - μ_b) = sign(f_b g_h - f_h g_b) · sign(g_h g_b)
-        const int cmp = c_.lex_sign(b.f * h.g - h.f * b.g, now_) * h.sg * b.sg;
-        if (cmp * side < 0) best.assign(1, &h);
-        else if (cmp == 0) best.push_back(&h);
+        for (const Hit* h : best) emit(h->wall->spec);
+        if (!best.empty()) break;
       }
-      for (const Hit* h : best) emit(h->wall->spec);
     }
   }
 
