@@ -56,7 +56,7 @@ scene("simultaneous", [floor()] + [
 
 # Tangential events: vertex y = (t-1)^2 touches the P-cut y = 0 at t = 1
 # (double root, no event); vertex y = (t-2)^3 crosses it at t = 2 (triple
-# root, one event); y = (t-3)^2 (t-3) ... as a quartic touch (t-3)^4 at t = 3.
+# root, one event); vertex y = (t-3)^4 touches it at t = 3 (quadruple root).
 scene("tangential", [
     floor(),
     tri("touch2", [["-8", "0", "1"], ["-6", "2", "1"], ["-7", "2", "2"]], translation(dy=["1", "-2", "1"])),
