@@ -112,10 +112,14 @@ int certify(Args& args) {
     order.intervals.pop_back();  // in force after the last batch, up to an event not processed
   } else if (limit) {
     stopped_by = "until";
-    end = limit;
+    // A batch exactly at the limit is the last event: no interval follows.
+    if (!sim.batches.empty() && k.compare(sim.batches.back().time, Exact_time(*limit)) == 0) order.intervals.pop_back();
+    else end = limit;
   }
   write_atomically("certify", *out, document(s, order, end, stopped_by));
-  std::cout << "kvd certify: " << sim.failures << " events in " << sim.batches.size() << " batches, "
+  std::size_t batches = 0;
+  for (const auto& e : order.events) batches += !e.equal_to_previous;
+  std::cout << "kvd certify: " << order.events.size() << " events in " << batches << " batches, "
             << order.certificates.size() << " certificate polynomials, stopped by " << stopped_by
             << (sim.collision ? " (" + *sim.collision + ")" : "") << "; wrote " << *out << "\n";
   return 0;
