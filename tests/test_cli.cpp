@@ -4,6 +4,8 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "kvd/version.hpp"
@@ -145,4 +147,23 @@ TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulat
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --kernel double --epsilon 1/1000").status == 0);
   CHECK(run("simulate").status == 2);
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --events x").status == 2);
+}
+
+TEST_CASE("kvd certify writes the file whole, or not at all on bad input", "[cli][certify]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";
+  const std::string out = std::string(KVD_BINARY_DIR) + "/two-triangles.cert.json";
+  std::remove(out.c_str());
+  CHECK(run("certify --help").out.find("usage: kvd certify") != std::string::npos);
+  CHECK(run("certify " + scene).status == 2);                                  // no --out
+  CHECK(run("certify " + scene + " --out " + out + " --events x").status == 2);
+  CHECK(run("certify " + scene + " --out " + out + " --json").status == 2);     // not an option of certify
+  CHECK(run("certify no-such-scene.json --out " + out).status == 2);
+  CHECK(!std::ifstream(out).good());  // nothing written by the refused runs
+  const Run r = run("certify " + scene + " --out " + out);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("8 events in 3 batches") != std::string::npos);
+  std::ifstream f(out);
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  CHECK(text.rfind("{\n\"format\": \"kvd-event-order/1\"", 0) == 0);
+  CHECK(text.find("\"motion_changes\": []\n}\n") != std::string::npos);
 }
