@@ -107,6 +107,8 @@ ZPoly gcd(ZPoly a, ZPoly b) {
   return a;
 }
 
+ZPoly square_free(const ZPoly& p) { return div_exact(p, gcd(p, derivative(p))); }
+
 ZPoly odd_part(const ZPoly& p0) {
   ZPoly p = p0;
   make_primitive(p);

@@ -1,5 +1,6 @@
 #include "kvd/kinetic/event_order.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace kvd::kinetic {
@@ -10,7 +11,7 @@ namespace {
 // (for a factor of p) refined until Descartes' rule, exact at 1, counts one
 // root of p's square-free part inside and none at the ends.
 std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_time& t) {
-  const zpoly::ZPoly s = zpoly::div_exact(p, zpoly::gcd(p, zpoly::derivative(p)));
+  const zpoly::ZPoly s = zpoly::square_free(p);
   for (;;) {
     if (t.is_rational()) return {t.rational(), t.rational()};
     if (zpoly::sign_at(s, t.lower()) != 0 && zpoly::sign_at(s, t.upper()) != 0 &&
@@ -53,20 +54,16 @@ void Event_order_recorder::batch(const Batch<Exact_time>& b, bool collision) {
     const auto it = current_.find(f.nodes);
     if (it == current_.end()) throw std::logic_error("event of a certificate not in force: " + f.nodes);
     // The certificate's polynomial that vanishes at the batch time.
-    const Event_order::Entry* entry = nullptr;
-    std::size_t which = 0;
-    for (std::size_t i : it->second)
-      if (k_.sign_at(zpoly::to_poly(order_.certificates[i].polynomial), b.time) == 0) {
-        entry = &order_.certificates[i];
-        which = i;
-        break;
-      }
-    if (!entry) throw std::logic_error("no polynomial of " + f.nodes + " vanishes at its event");
-    const auto [lo, hi] = isolating(entry->polynomial, b.time);
+    const auto vanishes = [&](std::size_t i) {
+      return k_.sign_at(zpoly::to_poly(order_.certificates[i].polynomial), b.time) == 0;
+    };
+    const auto which = std::find_if(it->second.begin(), it->second.end(), vanishes);
+    if (which == it->second.end()) throw std::logic_error("no polynomial of " + f.nodes + " vanishes at its event");
+    const zpoly::ZPoly& p = order_.certificates[*which].polynomial;
+    const auto [lo, hi] = isolating(p, b.time);
     int multiplicity = 0;
-    for (zpoly::ZPoly d = entry->polynomial; k_.sign_at(zpoly::to_poly(d), b.time) == 0; d = zpoly::derivative(d))
-      ++multiplicity;
-    order_.events.push_back({which, lo, hi, multiplicity, !first, collision});
+    for (zpoly::ZPoly d = p; k_.sign_at(zpoly::to_poly(d), b.time) == 0; d = zpoly::derivative(d)) ++multiplicity;
+    order_.events.push_back({*which, lo, hi, multiplicity, !first, collision});
     first = false;
   }
 }

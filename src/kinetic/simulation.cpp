@@ -47,11 +47,9 @@ class Simulator {
 public:
   Simulator(const K& k, const scene::Scene& s, const Options& o, Observer<K>* observer)
       : k_(k), c_(k, s), oracle_(k, s), o_(o), observer_(observer), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
-    if (s.end) limit_ = k.time(from_rational<FT>(*s.end));
-    if (o.until) {
-      const Time until = k.time(from_rational<FT>(*o.until));
-      if (!limit_ || k.compare(until, *limit_) < 0) limit_ = until;
-    }
+    sim_.limit = o.until;
+    if (s.end && (!sim_.limit || *s.end < *sim_.limit)) sim_.limit = *s.end;
+    if (sim_.limit) limit_ = k.time(from_rational<FT>(*sim_.limit));
   }
 
   Simulation<Time> run() {
@@ -61,9 +59,17 @@ public:
     sim_.construction_seconds = seconds_since(start);
     for (const auto& cert : certs_) ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)];
     std::optional<std::pair<Time, tree::Kvd_tree>> before_last;  // for Validation::end
-    while (sim_.failures < o_.max_events) {
+    for (;;) {
+      if (sim_.failures >= o_.max_events) {
+        sim_.stopped = Stop::events;
+        break;
+      }
       const std::optional<Time> next = queue_->first_time();
-      if (!next || (limit_ && k_.compare(*next, *limit_) > 0)) break;
+      if (!next) break;  // Stop::exhausted
+      if (limit_ && k_.compare(*next, *limit_) > 0) {
+        sim_.stopped = Stop::limit;
+        break;
+      }
       if (o_.validate == Validation::every) validate(now_, *next, current_);
       Batch<Time> batch;
       batch.time = *next;
@@ -78,6 +84,7 @@ public:
         after = tree::build(c_, *next, full() ? &evaluated_ : nullptr);
       } catch (const tree::Build_error& e) {
         sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + e.what() + colliding(batch);
+        sim_.stopped = Stop::collision;
         if (observer_) observer_->batch(batch, true);
         if (o_.validate == Validation::end) before_last.emplace(now_, current_);  // current stays in force
         now_ = *next;

@@ -41,7 +41,7 @@ std::string ids(const std::vector<std::size_t>& v) {
 }
 
 std::string document(const scene::Scene& s, const kinetic::Event_order& order, const std::optional<mpq_class>& end,
-                     const std::string& stopped_by) {
+                     const char* stopped_by) {
   auto kind_features = [&](std::size_t id) {
     const auto& c = order.certificates[id];
     return "\"kind\": " + json_string(kinetic::to_string(c.type)) + ", \"features\": " + json_string(c.features) +
@@ -99,22 +99,22 @@ int certify(Args& args) {
     std::cerr << "kvd certify: validation failed: " << sim.failure << "\n";
     return 1;
   }
-  // Why the run stopped decides the last interval: up to a time limit, up to
-  // +infinity when nothing fails any more, none after the last event.
-  std::optional<mpq_class> limit = o.until;
-  if (s.end && (!limit || *s.end < *limit)) limit = *s.end;
-  std::string stopped_by = "exhausted";
-  std::optional<mpq_class> end;
+  // Why the run stopped decides the last interval: up to the time limit, up
+  // to +infinity when nothing fails any more, none after the last event.
+  using kinetic::Stop;
+  const char* stopped_by = sim.stopped == Stop::collision ? "collision"
+                           : sim.stopped == Stop::events  ? "events"
+                           : sim.limit                    ? "until"
+                                                          : "exhausted";
   kinetic::Event_order order = recorder.take();
-  if (sim.collision) stopped_by = "collision";
-  else if (sim.failures >= o.max_events) {
-    stopped_by = "events";
+  std::optional<mpq_class> end;
+  if (sim.stopped == Stop::events) {
     order.intervals.pop_back();  // in force after the last batch, up to an event not processed
-  } else if (limit) {
-    stopped_by = "until";
+  } else if (sim.stopped != Stop::collision && sim.limit) {
     // A batch exactly at the limit is the last event: no interval follows.
-    if (!sim.batches.empty() && k.compare(sim.batches.back().time, Exact_time(*limit)) == 0) order.intervals.pop_back();
-    else end = limit;
+    if (!sim.batches.empty() && k.compare(sim.batches.back().time, Exact_time(*sim.limit)) == 0)
+      order.intervals.pop_back();
+    else end = sim.limit;
   }
   write_atomically("certify", *out, document(s, order, end, stopped_by));
   std::size_t batches = 0;

@@ -32,6 +32,8 @@ ZPoly mul(const ZPoly& a, const ZPoly& b);
 ZPoly div_exact(const ZPoly& a, const ZPoly& b);
 // Primitive gcd with positive leading coefficient; gcd(0, 0) = 0.
 ZPoly gcd(ZPoly a, ZPoly b);
+// p / gcd(p, p'): every root of p, each simple.
+ZPoly square_free(const ZPoly& p);
 // The product of the factors of odd multiplicity (Yun's square-free
 // decomposition): exactly the roots where p changes sign, each simple.
 ZPoly odd_part(const ZPoly& p);

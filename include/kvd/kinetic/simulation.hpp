@@ -48,6 +48,10 @@ struct Batch {
 
 using Type_counts = std::array<std::size_t, certificate_types>;
 
+// Why a simulation stopped: max_events reached, the next failure after the
+// time limit (the scene's end or `until`), no failure left, triangles met.
+enum class Stop { events, limit, exhausted, collision };
+
 template <class Time>
 struct Simulation {
   std::vector<Batch<Time>> batches;
@@ -59,6 +63,8 @@ struct Simulation {
   Time time_reached{};
   std::string structure_hash;            // of the tree in force at the end
   std::optional<std::string> collision;  // triangles meeting: the simulation stops there
+  Stop stopped = Stop::exhausted;
+  std::optional<mpq_class> limit;  // the time limit in force: the earlier of the scene's end and `until`
   std::size_t validation_failures = 0;
   std::string failure;  // the first validation failure, in words
   bool valid() const { return validation_failures == 0; }
