@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <type_traits>
 #include <map>
 
 #include "kvd/kernel/convert.hpp"
@@ -54,7 +56,11 @@ public:
 
   Simulation<Time> run() {
     const auto start = std::chrono::steady_clock::now();
-    current_ = tree::build(c_, now_, full() ? &evaluated_ : nullptr);
+    {
+      std::optional<tree::Kvd_tree> first = build_at(now_);
+      if (!first) throw tree::Build_error(build_error_);  // the scene is not valid at its start
+      current_ = std::move(*first);
+    }
     make_certificates();
     sim_.construction_seconds = seconds_since(start);
     for (const auto& cert : certs_) ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)];
@@ -70,20 +76,26 @@ public:
         sim_.stopped = Stop::limit;
         break;
       }
-      if (o_.validate == Validation::every) validate(now_, *next, current_);
+      if (o_.validate == Validation::every) {
+        auto stale = validate(now_, *next, current_);
+        if constexpr (floating) {
+          if (stale) {  // repaired: the queue now holds the fresh tree's certificates
+            ++sim_.recovery.stale_trees;
+            adopt(std::move(stale->second), std::move(stale->first));
+            continue;
+          }
+        }
+      }
       Batch<Time> batch;
       batch.time = *next;
       batch.certificates = certs_.size();
       for (std::size_t id : queue_->first()) batch.failing.push_back({certs_[id].type, certs_[id].nodes});
-      std::sort(batch.failing.begin(), batch.failing.end(),
-                [](const Failure& a, const Failure& b) { return std::tie(a.type, a.nodes) < std::tie(b.type, b.nodes); });
+      std::sort(batch.failing.begin(), batch.failing.end());
       const auto tree_start = std::chrono::steady_clock::now();
-      evaluated_.clear();
-      tree::Kvd_tree after;
-      try {
-        after = tree::build(c_, *next, full() ? &evaluated_ : nullptr);
-      } catch (const tree::Build_error& e) {
-        sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + e.what() + colliding(batch);
+      Time at = *next;
+      std::optional<tree::Kvd_tree> after = build_at(at);
+      if (!after) {
+        sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + build_error_ + colliding(batch);
         sim_.stopped = Stop::collision;
         if (observer_) observer_->batch(batch, true);
         if (o_.validate == Validation::end) before_last.emplace(now_, current_);  // current stays in force
@@ -91,18 +103,19 @@ public:
         break;
       }
       batch.tree_seconds = seconds_since(tree_start);
-      batch.changed = tree::first_difference(current_, after).has_value();
-      if (batch.changed) batch.structure = tree::structure_hash(after);
+      batch.changed = tree::first_difference(current_, *after).has_value();
       sim_.failures += batch.failures();
       sim_.simultaneous_batches += batch.failures() >= 2;
       for (const Failure& f : batch.failing) ++sim_.failures_by_type[static_cast<std::size_t>(f.type)];
       if (o_.validate == Validation::end) before_last.emplace(now_, std::move(current_));
-      current_ = std::move(after);
-      now_ = *next;
+      current_ = std::move(*after);
+      now_ = std::move(at);
       if (observer_) observer_->batch(batch, false);
       const auto cert_start = std::chrono::steady_clock::now();
       make_certificates();
+      if constexpr (floating) repair(batch);
       batch.certificate_seconds = seconds_since(cert_start);
+      batch.structure = tree::structure_hash(current_);
       sim_.batches.push_back(std::move(batch));
       if (o_.progress) o_.progress(sim_.batches.size(), sim_.failures);
     }
@@ -113,7 +126,47 @@ public:
   }
 
 private:
+  static constexpr bool floating = !std::is_same_v<K, Exact_kernel>;
+
   bool full() const { return o_.certificates == Certificate_set::full; }
+
+  std::optional<tree::Kvd_tree> try_build(const Time& t) {
+    evaluated_.clear();
+    try {
+      return tree::build(c_, t, full() ? &evaluated_ : nullptr);
+    } catch (const tree::Build_error& e) {
+      build_error_ = e.what();
+      return std::nullopt;
+    }
+  }
+
+  // The tree valid just after `at`; none when triangles meet there. A
+  // floating-point kernel whose build throws counts it and tries the later
+  // instants of the recovery, moving `at` to the one used.
+  std::optional<tree::Kvd_tree> build_at(Time& at) {
+    std::optional<tree::Kvd_tree> t = try_build(at);
+    if constexpr (floating) {
+      if (t) return t;
+      ++sim_.recovery.failed_builds;
+      const std::string error = build_error_;
+      for (int i = 1; i <= recovery_steps && !t; ++i) {
+        Time later = at + recovery_step(i);
+        if ((t = try_build(later))) {
+          ++sim_.recovery.rebuilds;
+          at = std::move(later);
+        }
+      }
+      if (!t) build_error_ = error;
+    }
+    return t;
+  }
+
+  // 2^i epsilon.
+  typename K::FT recovery_step(int i) const
+    requires floating
+  {
+    return k_.epsilon() * typename K::FT(std::ldexp(1.0, i));
+  }
 
   // The certificates of the tree in force, their failure times, the queue.
   void make_certificates() {
@@ -138,16 +191,58 @@ private:
     return it->second;
   }
 
+  // Floating-point kernels: a batch that repeats the previous one without
+  // changing the tree is rounding firing one event again; the run moves on
+  // to the first later instant whose tree differs. (A certificate cannot
+  // fail in the past: each is oriented positive just after the instant it is
+  // made, and its failure time is a root later than that instant by more
+  // than epsilon.)
+  void repair(const Batch<Time>& b)
+    requires floating
+  {
+    if (b.changed || sim_.batches.empty() || sim_.batches.back().failing != b.failing) return;
+    ++sim_.recovery.refires;
+    for (int i = 1; i <= recovery_steps; ++i) {
+      Time later = now_ + recovery_step(i);
+      std::optional<tree::Kvd_tree> t = try_build(later);
+      if (!t || !tree::first_difference(current_, *t)) continue;
+      adopt(std::move(*t), std::move(later));
+      return;
+    }
+    ++sim_.recovery.unrepaired;
+  }
+
+  // Floating-point kernels: the tree in force found stale by validation is
+  // replaced by the fresh build at `mid`.
+  void adopt(tree::Kvd_tree t, Time at) {
+    ++sim_.recovery.rebuilds;
+    current_ = std::move(t);
+    now_ = std::move(at);
+    make_certificates();
+  }
+
   // Checks the tree in force on (from, to) against a fresh build at a time
   // strictly between, by a classifier of its own (no cache shared with the
-  // simulation): a difference is a missed event.
-  void validate(const Time& from, const Time& to, const tree::Kvd_tree& in_force) {
-    const Time mid = between(k_, from, to);
-    const auto diff = tree::first_difference(in_force, tree::build(oracle_, mid));
-    if (!diff) return;
+  // simulation): a difference is a missed event. Returns the instant and the
+  // fresh tree when they differ.
+  std::optional<std::pair<Time, tree::Kvd_tree>> validate(const Time& from, const Time& to,
+                                                          const tree::Kvd_tree& in_force) {
+    Time mid = between(k_, from, to);
+    std::optional<std::string> diff;
+    std::optional<tree::Kvd_tree> fresh;
+    try {
+      fresh = tree::build(oracle_, mid);
+      diff = tree::first_difference(in_force, *fresh);
+      if (diff) diff = "the tree in force differs from a fresh build: " + *diff;
+    } catch (const tree::Build_error& e) {
+      diff = std::string("the fresh build failed: ") + e.what();
+    }
+    if (!diff) return std::nullopt;
     if (sim_.validation_failures++ == 0)
       sim_.failure = "between " + k_.to_string(from) + " and " + k_.to_string(to) + ", at " + k_.to_string(mid) +
-                     ", the tree in force differs from a fresh build: " + *diff;
+                     ", " + *diff;
+    if (!fresh) return std::nullopt;
+    return std::pair{std::move(mid), std::move(*fresh)};
   }
 
   static std::string colliding(const Batch<Time>& b) {
@@ -169,6 +264,7 @@ private:
   tree::Evaluated evaluated_;  // by the last build, for the full set
   std::vector<Certificate<typename K::Poly>> certs_;
   std::map<std::vector<FT>, std::optional<Time>> roots_;
+  std::string build_error_;  // why the last build threw
   Simulation<Time> sim_;
 };
 

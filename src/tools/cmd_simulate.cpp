@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "report.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
 
@@ -37,6 +38,10 @@ const char* const simulate_help =
     "                    within epsilon of the earliest (the thesis's\n"
     "                    epsilon-minimum) and validate at midpoints\n"
     "  --epsilon E       that epsilon (default 1e-9 for double, 2^(-BITS/2) for mpfr)\n"
+    "                    A floating-point run repairs a tree that rounding made\n"
+    "                    inconsistent (a build that throws, a batch repeating\n"
+    "                    itself, a tree that validation finds stale) by rebuilding,\n"
+    "                    and counts it under \"recovery\"\n"
     "  --trace FILE      one JSON line per certificate failure (format in the README)\n"
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
@@ -45,15 +50,11 @@ const char* const simulate_help =
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
     "           \"construction_ms\": X, \"update_ms\": {\"average\", \"max\", \"stddev\"},\n"
+    "           \"recovery\": {\"failed_builds\", \"refires\", \"stale_trees\", \"rebuilds\", \"unrepaired\"},\n"
     "           \"tree_update_share\": X, \"certificate_update_share\": X}\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation, 2 on bad input.\n";
 
-std::string approx(double d) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", d);
-  return buf;
-}
 // The isolating interval of an exact time; a floating-point time is its own.
 std::pair<std::string, std::string> interval(const Exact_kernel&, const Exact_time& t) {
   return {t.lower().get_str(), t.upper().get_str()};
@@ -121,12 +122,6 @@ std::string by_type_text(const kinetic::Type_counts& counts) {
   return std::to_string(total) + (out.empty() ? "" : " (" + out.substr(1) + ")");
 }
 
-std::string fixed(double x, int digits) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
-  return buf;
-}
-
 template <class K>
 int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const std::optional<std::string>& trace,
            bool list, bool json) {
@@ -154,7 +149,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << ", \"events_by_type\": " << by_type_json(sim.failures_by_type)
               << ", \"construction_ms\": " << fixed(1000 * sim.construction_seconds, 3) << ", \"update_ms\": {\"average\": "
               << fixed(u.average, 3) << ", \"max\": " << fixed(u.max, 3) << ", \"stddev\": " << fixed(u.stddev, 3)
-              << "}, \"tree_update_share\": " << fixed(u.tree_share, 3)
+              << "}, \"recovery\": " << recovery_json(sim.recovery)
+              << ", \"tree_update_share\": " << fixed(u.tree_share, 3)
               << ", \"certificate_update_share\": " << fixed(u.certificate_share, 3) << "}\n";
   } else {
     if (list)
@@ -176,6 +172,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << fixed(u.stddev, 3) << "\n"
               << "update shares: tree " << fixed(u.tree_share, 2) << ", certificates " << fixed(u.certificate_share, 2)
               << "\n";
+    if (sim.recovery.detected()) std::cout << "recovery:      " << recovery_text(sim.recovery) << "\n";
   }
   if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
   if (!sim.valid()) {

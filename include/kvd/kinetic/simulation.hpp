@@ -13,6 +13,21 @@
 // tree built at a time strictly between them (a rational in the exact
 // kernel, the midpoint in the others); a difference means an event was
 // missed.
+//
+// Recovery, floating-point kernels only: rounding can give a tree that
+// contradicts itself or the scene. The run detects three signs of it and
+// counts them in Recovery:
+//  * a build that throws (a fragment put across a triangle's plane): the run
+//    rebuilds at now + 2^i epsilon, i = 1, 2, ..., recovery_steps, and takes
+//    the first that succeeds (a collision only when none does);
+//  * a batch repeating the previous batch's failures without changing the
+//    tree: the run moves on to the first such later instant whose tree
+//    differs;
+//  * with --validate every, a tree in force that differs from the fresh
+//    build (a missed event): the run adopts the fresh build and its instant.
+// Events in a skipped interval are lost, which the differential harness
+// reports as missed. In the exact kernel none of this happens, and a build
+// that throws is a collision.
 #pragma once
 
 #include <array>
@@ -32,6 +47,7 @@ namespace kvd::kinetic {
 struct Failure {
   Certificate_type type;
   std::string nodes;  // the certificate's symbolic features
+  auto operator<=>(const Failure&) const = default;
 };
 
 template <class Time>
@@ -40,13 +56,24 @@ struct Batch {
   std::vector<Failure> failing;  // the certificates failing at `time`
   std::size_t certificates = 0;  // in force before the batch
   bool changed = false;          // whether the tree just after differs from the tree before
-  std::string structure;         // the tree's structure hash just after, when changed
+  std::string structure;         // the structure hash of the tree just after
   double tree_seconds = 0;         // rebuilding the tree
   double certificate_seconds = 0;  // making the certificates, their failure times and the queue
   std::size_t failures() const { return failing.size(); }
 };
 
 using Type_counts = std::array<std::size_t, certificate_types>;
+
+// What a floating-point run detected and repaired; all zero in the exact kernel.
+struct Recovery {
+  std::size_t failed_builds = 0;  // a build threw: rounding put a fragment across a triangle's plane
+  std::size_t refires = 0;        // batches repeating the previous batch's failures with the tree unchanged
+  std::size_t stale_trees = 0;    // trees in force that validation found differing from a fresh build
+  std::size_t rebuilds = 0;       // trees adopted to repair one of the above
+  std::size_t unrepaired = 0;     // signs still present after the last step (the run goes on)
+  std::size_t detected() const { return failed_builds + refires + stale_trees; }
+};
+inline constexpr int recovery_steps = 20;
 
 // Why a simulation stopped: max_events reached, the next failure after the
 // time limit (the scene's end or `until`), no failure left, triangles met.
@@ -65,6 +92,7 @@ struct Simulation {
   std::optional<std::string> collision;  // triangles meeting: the simulation stops there
   Stop stopped = Stop::exhausted;
   std::optional<mpq_class> limit;  // the time limit in force: the earlier of the scene's end and `until`
+  Recovery recovery;
   std::size_t validation_failures = 0;
   std::string failure;  // the first validation failure, in words
   bool valid() const { return validation_failures == 0; }
