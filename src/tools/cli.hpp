@@ -120,5 +120,6 @@ int order(Args& args);
 int render(Args& args);
 int simulate(Args& args);
 int certify(Args& args);
+int diff(Args& args);
 
 }  // namespace kvd::cli

@@ -23,6 +23,7 @@ const char* const usage =
     "  render SCENE   paint the decomposition from a viewpoint (SVG or PNG)\n"
     "  simulate SCENE run the kinetic KVD (exact events, symbolic batches)\n"
     "  certify SCENE  write an event-order certificate of the exact simulation\n"
+    "  diff SCENE     compare a floating-point simulation with the exact one\n"
     "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
     if (command == "render") return kvd::cli::render(args);
     if (command == "simulate") return kvd::cli::simulate(args);
     if (command == "certify") return kvd::cli::certify(args);
+    if (command == "diff") return kvd::cli::diff(args);
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {

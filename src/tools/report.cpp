@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include <mpfr.h>
+
 #include <cstdio>
 
 namespace kvd::cli {
@@ -16,6 +18,34 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
+namespace {
+// q in MPFR at 64 bits: its exponent range has no underflow for our errors.
+struct Wide {
+  mpfr_t v;
+  explicit Wide(const mpq_class& q) {
+    mpfr_init2(v, 64);
+    mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDN);
+  }
+  ~Wide() { mpfr_clear(v); }
+};
+}  // namespace
+
+std::string scientific(const mpq_class& q) {
+  if (q == 0) return "0";
+  Wide w(q);
+  char* text = nullptr;
+  mpfr_asprintf(&text, "%.2Re", w.v);
+  std::string out(text);
+  mpfr_free_str(text);
+  return out;
+}
+
+double log10_of(const mpq_class& q) {
+  Wide w(q);
+  mpfr_log10(w.v, w.v, MPFR_RNDN);
+  return mpfr_get_d(w.v, MPFR_RNDN);
+}
+
 std::string recovery_json(const kinetic::Recovery& r) {
   return "{\"failed_builds\": " + std::to_string(r.failed_builds) + ", \"refires\": " +
          std::to_string(r.refires) + ", \"stale_trees\": " + std::to_string(r.stale_trees) +
@@ -25,7 +55,7 @@ std::string recovery_json(const kinetic::Recovery& r) {
 std::string recovery_text(const kinetic::Recovery& r) {
   return std::to_string(r.failed_builds) + " failed builds, " + std::to_string(r.refires) + " repeated batches, " +
          std::to_string(r.stale_trees) + " stale trees; " +
-         std::to_string(r.rebuilds) + " rebuilds later, " + std::to_string(r.unrepaired) + " left unrepaired";
+         std::to_string(r.rebuilds) + " trees adopted, " + std::to_string(r.unrepaired) + " left unrepaired";
 }
 
 }  // namespace kvd::cli

@@ -1,5 +1,6 @@
 // Exact rationals into a kernel's field: exact for mpq, rounded to nearest
-// for double and MPFR (at the current precision).
+// for double and MPFR (at the current precision); and back, exactly (every
+// double and every MPFR number is a rational).
 #pragma once
 
 #include <gmpxx.h>
@@ -21,5 +22,9 @@ inline Mpfr_number from_rational<Mpfr_number>(const mpq_class& q) {
 }
 template <>
 double from_rational<double>(const mpq_class& q);  // src/kernel/convert.cpp
+
+inline mpq_class to_rational(const mpq_class& q) { return q; }
+inline mpq_class to_rational(double d) { return mpq_class(d); }  // mpq_set_d is exact
+mpq_class to_rational(const Mpfr_number& x);
 
 }  // namespace kvd
