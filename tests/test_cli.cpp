@@ -8,6 +8,9 @@
 #include <iterator>
 #include <string>
 
+#include <nlohmann/json.hpp>
+#include <vector>
+
 #include "kvd/version.hpp"
 
 namespace {
@@ -166,4 +169,57 @@ TEST_CASE("kvd certify writes the file whole, or not at all on bad input", "[cli
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   CHECK(text.rfind("{\n\"format\": \"kvd-event-order/1\"", 0) == 0);
   CHECK(text.find("\"motion_changes\": []\n}\n") != std::string::npos);
+}
+
+TEST_CASE("kvd diff compares kernels event by event; divergence exits 0, bad input 2", "[cli][diff]") {
+  const std::string data = std::string(KVD_SOURCE_DIR) + "/data/";
+  CHECK(run("diff --help").out.find("usage: kvd diff") != std::string::npos);
+  CHECK(run("diff " + data + "two-triangles.json").status == 2);  // no --kernel
+  CHECK(run("diff " + data + "two-triangles.json --kernel quad").status == 2);
+  CHECK(run("diff " + data + "two-triangles.json --kernel mpfr:1").status == 2);
+  CHECK(run("diff " + data + "two-triangles.json --kernel double --events x").status == 2);
+  CHECK(run("diff no-such-scene.json --kernel double").status == 2);
+
+  const Run same = run("diff " + data + "two-triangles.json --kernel double --json");
+  REQUIRE(same.status == 0);
+  const auto j = nlohmann::json::parse(same.out);
+  CHECK(j["events_compared"] == 8);
+  CHECK(j["events"].size() == 8);
+  CHECK(j["first_divergence_event"].is_null());
+  for (const char* field : {"order_mismatches", "missed_events", "spurious_events", "structure_mismatches"})
+    CHECK(j[field] == 0);
+  for (const char* field : {"max_time_error", "max_relative_time_error", "seconds_exact", "seconds_inexact"})
+    CHECK(j[field].is_number());
+  CHECK(j["events"][0]["in_order"] == true);
+  CHECK(j["events"][0]["structure_equal"] == true);
+
+  // Failures 1e-31 apart: double sees them at one time, so the trees after differ.
+  const Run stiff = run("diff " + data + "stiff/close-events.json --kernel double --json");
+  REQUIRE(stiff.status == 0);
+  const auto k = nlohmann::json::parse(stiff.out);
+  CHECK(k["first_divergence_event"] == 0);
+  CHECK(k["structure_mismatches"].get<int>() > 0);
+}
+
+TEST_CASE("kvd bench accuracy writes its table, or nothing on bad input", "[cli][bench]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/bench-accuracy";
+  const std::string common = " --events 5 --scenes two-triangles,stiff/close-events --data " +
+                             std::string(KVD_SOURCE_DIR) + "/data --out " + out;
+  std::remove((out + "/accuracy.csv").c_str());
+  CHECK(run("bench").status == 2);
+  CHECK(run("bench no-such-suite").status == 2);
+  CHECK(run("bench --help").status == 0);
+  CHECK(run("bench accuracy --help").out.find("usage: kvd bench accuracy") != std::string::npos);
+  CHECK(run("bench accuracy" + common + " --kernels double,quad").status == 2);
+  CHECK(run("bench accuracy --events 5 --scenes no-such-scene --out " + out).status == 2);
+  CHECK(!std::ifstream(out + "/accuracy.csv").good());
+  const Run r = run("bench accuracy" + common + " --kernels double,mpfr:53,exact");
+  CHECK(r.status == 0);
+  std::ifstream f(out + "/accuracy.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(f, line);) lines.push_back(line);
+  REQUIRE(lines.size() == 7);  // the header, two scenes by three kernels
+  CHECK(lines[0].rfind("scene,kernel,events,", 0) == 0);
+  CHECK(lines[1].rfind("two-triangles,double,8,", 0) == 0);
+  CHECK(lines[6].rfind("stiff/close-events,exact,", 0) == 0);
 }

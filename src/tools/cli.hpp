@@ -36,6 +36,10 @@ public:
   const std::string& value(const std::string& flag);
   std::uint64_t unsigned_value(const std::string& flag);
   [[noreturn]] void unknown(const std::string& arg) const;
+  // The arguments not consumed yet, as those of `command` (a subcommand).
+  Args remaining(std::string command) const {
+    return Args(std::move(command), std::vector<std::string>(args_.begin() + static_cast<std::ptrdiff_t>(i_), args_.end()));
+  }
 
 private:
   std::string command_;
@@ -90,9 +94,9 @@ unsigned mpfr_bits(const std::string& command, const std::string& bits);
 
 // Calls f with the kernel a --kernel option names: exact, double or
 // mpfr:BITS; a floating-point one with `epsilon` when given (--epsilon; the
-// exact kernel has none).
+// exact kernel has none); returns what f returns.
 template <class F>
-int with_kernel(const std::string& command, const std::string& name, F&& f,
+auto with_kernel(const std::string& command, const std::string& name, F&& f,
                 const std::optional<mpq_class>& epsilon = std::nullopt) {
   if (epsilon && *epsilon <= 0) throw Usage_error("kvd " + command + ": --epsilon must be positive");
   if (name == "exact") {
@@ -121,5 +125,6 @@ int render(Args& args);
 int simulate(Args& args);
 int certify(Args& args);
 int diff(Args& args);
+int bench(Args& args);
 
 }  // namespace kvd::cli

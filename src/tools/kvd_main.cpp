@@ -24,6 +24,7 @@ const char* const usage =
     "  simulate SCENE run the kinetic KVD (exact events, symbolic batches)\n"
     "  certify SCENE  write an event-order certificate of the exact simulation\n"
     "  diff SCENE     compare a floating-point simulation with the exact one\n"
+    "  bench SUITE    benchmarks: accuracy (error against run time)\n"
     "\n"
     "options:\n"
     "  -h, --help     print this help and exit\n"
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
     if (command == "simulate") return kvd::cli::simulate(args);
     if (command == "certify") return kvd::cli::certify(args);
     if (command == "diff") return kvd::cli::diff(args);
+    if (command == "bench") return kvd::cli::bench(args);
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {

@@ -1,0 +1,234 @@
+// kvd bench accuracy: error against run time. For every scene of a fixed set,
+// one exact run, then the differential harness (kvd diff) for double, MPFR at
+// 24, 53, 113, 256 and 1024 bits, and a second exact run. Writes
+// accuracy.csv (one row per scene and kernel), accuracy.md (a table per
+// kernel and one per scene) and, when gnuplot is installed, accuracy.svg.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "bench.hpp"
+#include "cli.hpp"
+#include "kvd/kinetic/differential.hpp"
+#include "report.hpp"
+
+namespace kvd::bench {
+
+namespace {
+
+const char* const accuracy_help =
+    "usage: kvd bench accuracy [--events N] [--scenes A,B,...] [--kernels K1,K2,...]\n"
+    "                          [--data DIR] [--out DIR]\n"
+    "\n"
+    "Error against run time. For every scene, one exact run of N certificate\n"
+    "failures (default 100), then kvd diff against each kernel (default double,\n"
+    "mpfr:24, mpfr:53, mpfr:113, mpfr:256, mpfr:1024 and exact, a second exact\n"
+    "run). Writes DIR/accuracy.csv, DIR/accuracy.md and, with gnuplot on the\n"
+    "PATH, DIR/accuracy.svg: the largest relative event-time error and the share\n"
+    "of exact events not reproduced (missed, out of order, or another tree after\n"
+    "them) against seconds per event, one point per kernel and scene.\n"
+    "\n"
+    "  --scenes   names under --data (default: random-20, uniform-scale-50,\n"
+    "             uniform-density-100, boxes, rotor, viewpoint and the nine\n"
+    "             scenes of stiff/)\n"
+    "  --data     where the scenes are (default data)\n"
+    "  --out      the output directory (default bench-out), created if needed\n"
+    "\n"
+    "Exit status: 0 on success, 2 on bad input.\n";
+
+const std::vector<std::string> default_scenes{
+    "random-20",           "uniform-scale-50",      "uniform-density-100",    "boxes",
+    "rotor",               "viewpoint",             "stiff/close-events",     "stiff/simultaneous",
+    "stiff/tangential",    "stiff/wide-range",      "stiff/slow-fast",        "stiff/high-degree",
+    "stiff/rational-rotation", "stiff/near-degenerate", "stiff/z-near-plane"};
+const std::vector<std::string> default_kernels{"double",   "mpfr:24",   "mpfr:53", "mpfr:113",
+                                               "mpfr:256", "mpfr:1024", "exact"};
+
+struct Row {
+  std::string scene, kernel;
+  std::size_t events = 0;
+  double seconds = 0;
+  kinetic::Differential d;
+  std::size_t not_reproduced = 0;  // exact events missed, out of order or followed by another tree
+  double seconds_per_event() const { return events ? seconds / static_cast<double>(events) : 0; }
+  double share() const { return events ? static_cast<double>(not_reproduced) / static_cast<double>(events) : 0; }
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::string csv(const std::vector<Row>& rows) {
+  std::string out =
+      "scene,kernel,events,seconds,seconds_per_event,max_time_error,max_relative_time_error,"
+      "log10_max_relative_time_error,order_mismatches,missed_events,spurious_events,structure_mismatches,"
+      "first_divergence_event,not_reproduced_share,failed_builds,refires,rebuilds\n";
+  for (const Row& r : rows) {
+    const auto& d = r.d;
+    const std::string log10 = d.max_relative_time_error > 0 ? cli::fixed(cli::log10_of(d.max_relative_time_error), 3) : "NaN";
+    out += r.scene + "," + r.kernel + "," + std::to_string(r.events) + "," + cli::fixed(r.seconds, 6) + "," +
+           cli::approx(r.seconds_per_event()) + "," + cli::scientific(d.max_time_error) + "," +
+           cli::scientific(d.max_relative_time_error) + "," + log10 + "," + std::to_string(d.order_mismatches) + "," +
+           std::to_string(d.missed_events) + "," + std::to_string(d.spurious_events) + "," +
+           std::to_string(d.structure_mismatches) + "," +
+           (d.first_divergence_event ? std::to_string(*d.first_divergence_event) : "") + "," +
+           cli::fixed(r.share(), 4) + "," + std::to_string(d.recovery.failed_builds) + "," +
+           std::to_string(d.recovery.refires) + "," + std::to_string(d.recovery.rebuilds) + "\n";
+  }
+  return out;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// Per kernel: median seconds per event, the worst relative error, and how
+// many scenes diverged; then the whole table.
+std::string markdown(const std::vector<Row>& rows, const std::vector<std::string>& kernels, std::size_t events) {
+  std::string out = "Per kernel, over " + std::to_string(rows.size() / std::max<std::size_t>(1, kernels.size())) +
+                    " scenes of up to " + std::to_string(events) + " exact events each:\n\n"
+                    "| kernel | median ms per event | worst relative time error | scenes diverging | "
+                    "events not reproduced | missed | spurious | failed builds repaired |\n"
+                    "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const std::string& k : kernels) {
+    std::vector<double> spe;
+    mpq_class worst = 0;
+    std::size_t diverging = 0, scenes = 0, not_reproduced = 0, total = 0, missed = 0, spurious = 0, repaired = 0;
+    for (const Row& r : rows) {
+      if (r.kernel != k) continue;
+      ++scenes;
+      spe.push_back(1000 * r.seconds_per_event());
+      if (r.d.max_relative_time_error > worst) worst = r.d.max_relative_time_error;
+      diverging += r.d.first_divergence_event.has_value();
+      not_reproduced += r.not_reproduced;
+      total += r.events;
+      missed += r.d.missed_events;
+      spurious += r.d.spurious_events;
+      repaired += r.d.recovery.failed_builds;
+    }
+    out += "| " + k + " | " + cli::fixed(median(spe), 3) + " | " + cli::scientific(worst) + " | " +
+           std::to_string(diverging) + " of " + std::to_string(scenes) + " | " + std::to_string(not_reproduced) +
+           " of " + std::to_string(total) + " | " + std::to_string(missed) + " | " + std::to_string(spurious) + " | " +
+           std::to_string(repaired) + " |\n";
+  }
+  out += "\nPer scene and kernel:\n\n"
+         "| scene | kernel | events | ms per event | max relative time error | first divergence | "
+         "order | missed | spurious | structure |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Row& r : rows)
+    out += "| " + r.scene + " | " + r.kernel + " | " + std::to_string(r.events) + " | " +
+           cli::fixed(1000 * r.seconds_per_event(), 3) + " | " + cli::scientific(r.d.max_relative_time_error) + " | " +
+           (r.d.first_divergence_event ? std::to_string(*r.d.first_divergence_event) : "-") + " | " +
+           std::to_string(r.d.order_mismatches) + " | " + std::to_string(r.d.missed_events) + " | " +
+           std::to_string(r.d.spurious_events) + " | " + std::to_string(r.d.structure_mismatches) + " |\n";
+  return out;
+}
+
+// Column numbers refer to csv() above.
+std::string gnuplot_script(const std::string& csv_path, const std::string& svg_path,
+                           const std::vector<std::string>& kernels, std::size_t events) {
+  std::string list;
+  for (const auto& k : kernels) list += (list.empty() ? "" : " ") + k;
+  return "set terminal svg size 1100,460 dynamic font 'sans,12'\n"
+         "set output '" + svg_path + "'\n"
+         "set datafile separator ','\n"
+         "set datafile missing 'NaN'\n"
+         "kernels = '" + list + "'\n"
+         "set multiplot layout 1,2 title 'Floating-point kernels against the exact kernel (" + std::to_string(events) +
+         " exact events per scene, one point per kernel and scene)'\n"
+         "set logscale x\n"
+         "set grid\n"
+         "set xlabel 'seconds per event (log)'\n"
+         "set key bottom left\n"
+         "set ylabel 'log10 of the largest relative event-time error'\n"
+         "plot for [i=1:words(kernels)] '" + csv_path + "' skip 1 using "
+         "(strcol(2) eq word(kernels, i) ? column(5) : NaN):(column(8)) with points pt i ps 1.2 title word(kernels, i)\n"
+         "set ylabel 'share of exact events not reproduced'\n"
+         "set yrange [-0.05:1.05]\n"
+         "set key top right\n"
+         "plot for [i=1:words(kernels)] '" + csv_path + "' skip 1 using "
+         "(strcol(2) eq word(kernels, i) ? column(5) : NaN):(column(14)) with points pt i ps 1.2 title word(kernels, i)\n"
+         "unset multiplot\n";
+}
+
+bool on_path(const std::string& program) {
+  const std::string command = "command -v " + program + " > /dev/null 2>&1";
+  return std::system(command.c_str()) == 0;
+}
+
+}  // namespace
+
+int accuracy(cli::Args& args) {
+  std::size_t events = 100;
+  std::vector<std::string> scenes = default_scenes, kernels = default_kernels;
+  std::string data = "data", out = "bench-out";
+  while (!args.done()) {
+    const std::string& a = args.next();
+    if (a == "--help" || a == "-h") {
+      std::cout << accuracy_help;
+      return 0;
+    }
+    if (a == "--events") events = args.unsigned_value(a);
+    else if (a == "--scenes") scenes = split(args.value(a));
+    else if (a == "--kernels") kernels = split(args.value(a));
+    else if (a == "--data") data = args.value(a);
+    else if (a == "--out") out = args.value(a);
+    else args.unknown(a);
+  }
+  // Check every name before the first run, so bad input costs nothing.
+  if (out.find('\'') != std::string::npos) throw cli::Usage_error("kvd bench accuracy: --out must not contain a quote");
+  for (const std::string& k : kernels) cli::with_kernel("bench accuracy", k, [](const auto&) { return 0; });
+  std::vector<scene::Scene> loaded;
+  for (const std::string& s : scenes) loaded.push_back(scene::load_scene(data + "/" + s + ".json"));
+  std::filesystem::create_directories(out);
+
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const kinetic::Exact_run exact = kinetic::run_exact(loaded[i], events);
+    for (const std::string& name : kernels) {
+      Row r;
+      r.scene = scenes[i];
+      r.kernel = name;
+      r.events = exact.sim.failures;
+      r.d = cli::with_kernel("bench accuracy", name, [&](const auto& k) {
+        return kinetic::compare_with(exact, k, loaded[i]);
+      });
+      r.seconds = r.d.seconds_inexact;
+      for (const auto& m : r.d.events) r.not_reproduced += !m.inexact_event || !m.in_order || !m.structure_equal;
+      std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events << " events, "
+                << cli::fixed(r.seconds, 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
+                << ", " << r.not_reproduced << " not reproduced\n";
+      rows.push_back(std::move(r));
+    }
+  }
+  const std::string csv_path = out + "/accuracy.csv", svg_path = out + "/accuracy.svg";
+  cli::write_atomically("bench accuracy", csv_path, csv(rows));
+  cli::write_atomically("bench accuracy", out + "/accuracy.md", markdown(rows, kernels, events));
+  std::cout << markdown(rows, kernels, events);
+  if (!on_path("gnuplot")) {
+    std::cerr << "kvd bench accuracy: gnuplot not found (apt-get install gnuplot-nox): no plot\n";
+    return 0;
+  }
+  // The script stays beside the data, to re-plot by hand.
+  cli::write_atomically("bench accuracy", out + "/accuracy.gp", gnuplot_script(csv_path, svg_path, kernels, events));
+  const std::string command = "gnuplot '" + out + "/accuracy.gp'";
+  if (std::system(command.c_str()) != 0) {
+    std::filesystem::remove(svg_path);
+    std::cerr << "kvd bench accuracy: gnuplot failed; the CSV and the tables are written\n";
+    return 0;
+  }
+  std::cerr << "kvd bench accuracy: wrote " << csv_path << ", " << out << "/accuracy.md, " << svg_path << "\n";
+  return 0;
+}
+
+}  // namespace kvd::bench

@@ -1,0 +1,11 @@
+// The suites of `kvd bench`, each a command of its own.
+#pragma once
+
+#include "cli.hpp"
+
+namespace kvd::bench {
+
+// kvd bench accuracy: error against run time of the floating-point kernels.
+int accuracy(cli::Args& args);
+
+}  // namespace kvd::bench

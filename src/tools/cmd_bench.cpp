@@ -1,0 +1,32 @@
+// kvd bench SUITE: the benchmark suites (src/bench/).
+#include <iostream>
+
+#include "bench.hpp"
+#include "cli.hpp"
+
+namespace kvd::cli {
+
+namespace {
+const char* const bench_help =
+    "usage: kvd bench SUITE [options]\n"
+    "\n"
+    "suites:\n"
+    "  accuracy   error against run time of the floating-point kernels\n"
+    "\n"
+    "Every suite takes --help. Timings are medians of one run on this machine;\n"
+    "nothing is asserted about them.\n";
+}  // namespace
+
+int bench(Args& args) {
+  if (args.done()) throw Usage_error(std::string("kvd bench: missing SUITE\n") + bench_help);
+  const std::string suite = args.next();
+  if (suite == "--help" || suite == "-h") {
+    std::cout << bench_help;
+    return 0;
+  }
+  Args rest = args.remaining("bench " + suite);
+  if (suite == "accuracy") return kvd::bench::accuracy(rest);
+  throw Usage_error("kvd bench: unknown suite '" + suite + "' (see kvd bench --help)");
+}
+
+}  // namespace kvd::cli
