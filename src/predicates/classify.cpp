@@ -18,6 +18,13 @@ int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t
 }
 
 template <class K>
+bool Classifier<K>::vanishes(const typename K::Poly& f) const {
+  for (const auto& c : f.coefficients())
+    if (k_->sign(c) != 0) return false;
+  return true;
+}
+
+template <class K>
 const Plane4<typename K::Poly>& Classifier<K>::plane_poly(const symbolic::Symbolic_plane& p) const {
   auto it = planes_.find(p);
   if (it == planes_.end()) it = planes_.emplace(p, motion_.plane(p)).first;
@@ -41,12 +48,12 @@ template <class K>
 Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex& given) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
   Point4<typename K::Poly> x = point_poly(v);
-  if (!(x[0].is_zero() && x[1].is_zero() && x[2].is_zero() && x[3].is_zero())) return x;
+  if (!(vanishes(x[0]) && vanishes(x[1]) && vanishes(x[2]) && vanishes(x[3]))) return x;
   const auto xe = perturbed().point(v);
   int order = -1;  // the lowest order of ε with a non-zero coordinate
   for (int k = 0; k < 4; ++k)
     for (int j = 0; j <= xe[k].degree(); ++j)
-      if (!xe[k][j].is_zero() && (order < 0 || j < order)) order = j;
+      if (!vanishes(xe[k][j]) && (order < 0 || j < order)) order = j;
   for (int k = 0; k < 4; ++k) x[k] = order < 0 ? typename K::Poly() : xe[k][order];
   return x;
 }
@@ -62,15 +69,15 @@ typename Classifier<K>::Deciding Classifier<K>::deciding(const symbolic::Symboli
   const bool derived = v.kind != symbolic::Symbolic_vertex::Kind::endpoint;
   const Point4<typename K::Poly>& x = point_poly(v);
   d.value = dot(plane_poly(p), x);
-  if (!d.value.is_zero()) {
+  if (!vanishes(d.value)) {
     if (derived) d.w = x[3];
     return d;
   }
   // Rule 4: expand in ε; coefficients are polynomials in t.
   d.perturbed = true;
-  auto first_nonzero = [](const Poly<typename K::Poly>& e) {
+  auto first_nonzero = [this](const Poly<typename K::Poly>& e) {
     for (const auto& c : e.coefficients())
-      if (!c.is_zero()) return c;
+      if (!vanishes(c)) return c;
     return typename K::Poly();
   };
   const auto xe = perturbed().point(v);
@@ -99,9 +106,9 @@ Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, c
   const Deciding d = deciding(v, p);
   if (d.incident) return {0, Rule::incidence};
   // A direction (W identically zero) counts as W > 0, as in kvd::side.
-  const int w = d.w.is_zero() ? 1 : lex_sign(d.w, t);
+  const int w = vanishes(d.w) ? 1 : lex_sign(d.w, t);
   if (d.perturbed) {
-    if (!d.value.is_zero()) return {lex_sign(d.value, t) * w, Rule::perturbation};
+    if (!vanishes(d.value)) return {lex_sign(d.value, t) * w, Rule::perturbation};
     if (unresolved_++ < 16) unresolved_cases_.emplace_back(v, p);
     return {0, Rule::unresolved};
   }

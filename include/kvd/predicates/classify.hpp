@@ -88,6 +88,11 @@ private:
     typename K::Poly value, w;
   };
   Deciding deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
+  // Whether every coefficient of f is zero by the kernel's test: "identically
+  // zero" is exact in the exact kernel, within epsilon in the others (so a
+  // configuration degenerate in the scene's rationals, such as a vertical
+  // triangle, goes to the perturbation there too, not to rounding noise).
+  bool vanishes(const typename K::Poly& f) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
 
   const K* k_;
