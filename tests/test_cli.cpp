@@ -223,3 +223,23 @@ TEST_CASE("kvd bench accuracy writes its table, or nothing on bad input", "[cli]
   CHECK(lines[1].rfind("two-triangles,double,8,", 0) == 0);
   CHECK(lines[6].rfind("stiff/close-events,exact,", 0) == 0);
 }
+
+TEST_CASE("kvd bench thesis writes the thesis's tables beside ours, or nothing on bad input", "[cli][bench]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/bench-thesis";
+  const std::string data = " --data " + std::string(KVD_SOURCE_DIR) + "/data --out " + out;
+  std::remove((out + "/thesis.md").c_str());
+  CHECK(run("bench thesis --help").out.find("usage: kvd bench thesis") != std::string::npos);
+  CHECK(run("bench thesis --sizes 0" + data).status == 2);
+  CHECK(run("bench thesis --sizes 30" + data).status == 2);  // no scene of 30 triangles
+  CHECK(run("bench thesis --sizes 25 --kernels exact,quad" + data).status == 2);
+  CHECK(!std::ifstream(out + "/thesis.md").good());
+  const Run r = run("bench thesis --sizes 25 --events 10" + data);
+  REQUIRE(r.status == 0);
+  std::ifstream f(out + "/thesis.md");
+  const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // Figure 8.4 at 25 triangles: one P-node per vertex, in both.
+  CHECK(md.find("| P-nodes | 75 / 75 |") != std::string::npos);
+  // A static scene makes no certificate.
+  CHECK(md.find("| uniform-scale 25 | 0 / ") != std::string::npos);
+  CHECK(std::ifstream(out + "/thesis.csv").good());
+}

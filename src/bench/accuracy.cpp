@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <sstream>
 
 #include "bench.hpp"
 #include "cli.hpp"
@@ -57,14 +56,6 @@ struct Row {
   double seconds_per_event() const { return events ? seconds / static_cast<double>(events) : 0; }
   double share() const { return events ? static_cast<double>(not_reproduced) / static_cast<double>(events) : 0; }
 };
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 std::string csv(const std::vector<Row>& rows) {
   std::string out =
@@ -186,8 +177,8 @@ int accuracy(cli::Args& args) {
       return 0;
     }
     if (a == "--events") events = args.unsigned_value(a);
-    else if (a == "--scenes") scenes = split(args.value(a));
-    else if (a == "--kernels") kernels = split(args.value(a));
+    else if (a == "--scenes") scenes = cli::comma_list(args.value(a));
+    else if (a == "--kernels") kernels = cli::comma_list(args.value(a));
     else if (a == "--data") data = args.value(a);
     else if (a == "--out") out = args.value(a);
     else args.unknown(a);

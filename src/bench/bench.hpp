@@ -7,5 +7,7 @@ namespace kvd::bench {
 
 // kvd bench accuracy: error against run time of the floating-point kernels.
 int accuracy(cli::Args& args);
+// kvd bench thesis: the thesis's Figures 8.4-8.9 for our implementation.
+int thesis(cli::Args& args);
 
 }  // namespace kvd::bench

@@ -3,9 +3,11 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "kvd/scene/exact_number.hpp"
 
@@ -97,6 +99,14 @@ void write_atomically(const std::string& command, const std::string& path, const
     std::filesystem::remove(temp, ec);
     throw Usage_error("kvd " + command + ": cannot write " + path + " (" + ec.message() + ")");
   }
+}
+
+std::vector<std::string> comma_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty() && std::find(out.begin(), out.end(), item) == out.end()) out.push_back(item);
+  return out;
 }
 
 unsigned mpfr_bits(const std::string& command, const std::string& bits) {

@@ -89,6 +89,9 @@ void write_atomically(const std::string& command, const std::string& path, const
 // every, end or none, given to --validate.
 kinetic::Validation validation_option(const std::string& command, const std::string& value);
 
+// The items of a comma-separated option value, non-empty, each once, in order.
+std::vector<std::string> comma_list(const std::string& text);
+
 // BITS of a --kernel mpfr:BITS option, between 2 and 65536.
 unsigned mpfr_bits(const std::string& command, const std::string& bits);
 

@@ -12,6 +12,7 @@ const char* const bench_help =
     "\n"
     "suites:\n"
     "  accuracy   error against run time of the floating-point kernels\n"
+    "  thesis     the thesis's Figures 8.4-8.9 for our implementation\n"
     "\n"
     "Every suite takes --help. Timings are medians of one run on this machine;\n"
     "nothing is asserted about them.\n";
@@ -26,6 +27,7 @@ int bench(Args& args) {
   }
   Args rest = args.remaining("bench " + suite);
   if (suite == "accuracy") return kvd::bench::accuracy(rest);
+  if (suite == "thesis") return kvd::bench::thesis(rest);
   throw Usage_error("kvd bench: unknown suite '" + suite + "' (see kvd bench --help)");
 }
 
