@@ -59,8 +59,16 @@ Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex
 }
 
 template <class K>
-typename Classifier<K>::Deciding Classifier<K>::deciding(const symbolic::Symbolic_vertex& v,
-                                                         const symbolic::Symbolic_plane& p) const {
+const typename Classifier<K>::Deciding& Classifier<K>::deciding(const symbolic::Symbolic_vertex& v,
+                                                                const symbolic::Symbolic_plane& p) const {
+  auto it = deciding_.find({v, p});
+  if (it == deciding_.end()) it = deciding_.emplace(std::pair{v, p}, decide(v, p)).first;
+  return it->second;
+}
+
+template <class K>
+typename Classifier<K>::Deciding Classifier<K>::decide(const symbolic::Symbolic_vertex& v,
+                                                       const symbolic::Symbolic_plane& p) const {
   Deciding d;
   if (symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) {
     d.incident = true;
@@ -92,7 +100,7 @@ const std::vector<typename K::Poly>& Classifier<K>::certificate(const symbolic::
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
   auto [it, fresh] = certificates_.try_emplace({v, p});
   if (fresh) {
-    const Deciding d = deciding(v, p);
+    const Deciding& d = deciding(v, p);
     for (const auto* q : {&d.value, &d.w})
       if (q->degree() >= 1) it->second.push_back(*q);
   }
@@ -103,7 +111,7 @@ template <class K>
 Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, const symbolic::Symbolic_plane& p,
                                        const typename K::Time& t) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
-  const Deciding d = deciding(v, p);
+  const Deciding& d = deciding(v, p);
   if (d.incident) return {0, Rule::incidence};
   // A direction (W identically zero) counts as W > 0, as in kvd::side.
   const int w = vanishes(d.w) ? 1 : lex_sign(d.w, t);

@@ -87,7 +87,10 @@ private:
     bool perturbed = false;  // the polynomials come from the ε-expansion
     typename K::Poly value, w;
   };
-  Deciding deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
+  // Computed once per pair (v canonical): a simulation rebuilds the tree at
+  // every batch and classifies mostly the same pairs again.
+  const Deciding& deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
+  Deciding decide(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
   // Whether every coefficient of f is zero by the kernel's test: "identically
   // zero" is exact in the exact kernel, within epsilon in the others (so a
   // configuration degenerate in the scene's rationals, such as a vertical
@@ -99,6 +102,7 @@ private:
   symbolic::Scene_geometry<typename K::Poly> motion_;
   mutable std::map<symbolic::Symbolic_plane, Plane4<typename K::Poly>> planes_;
   mutable std::map<symbolic::Symbolic_vertex, Point4<typename K::Poly>> points_;
+  mutable std::map<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>, Deciding> deciding_;
   mutable std::map<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>, std::vector<typename K::Poly>>
       certificates_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
