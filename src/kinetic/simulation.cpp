@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <type_traits>
 #include <map>
 
@@ -148,24 +147,33 @@ private:
     if constexpr (floating) {
       if (t) return t;
       ++sim_.recovery.failed_builds;
-      const std::string error = build_error_;
-      for (int i = 1; i <= recovery_steps && !t; ++i) {
-        Time later = at + recovery_step(i);
-        if ((t = try_build(later))) {
-          ++sim_.recovery.rebuilds;
-          at = std::move(later);
-        }
+      const std::string error = build_error_;  // the steps' own failures are not the news
+      auto later = step_forward(at, [](const tree::Kvd_tree&) { return true; });
+      if (!later) {
+        build_error_ = error;
+        return std::nullopt;
       }
-      if (!t) build_error_ = error;
+      ++sim_.recovery.rebuilds;
+      at = std::move(later->first);
+      t = std::move(later->second);
     }
     return t;
   }
 
-  // 2^i epsilon.
-  typename K::FT recovery_step(int i) const
+  // The first of the instants base + 2^i epsilon, i = 1, ..., recovery_steps,
+  // whose build succeeds and is accepted, with its tree.
+  template <class Accept>
+  std::optional<std::pair<Time, tree::Kvd_tree>> step_forward(const Time& base, Accept accept)
     requires floating
   {
-    return k_.epsilon() * typename K::FT(std::ldexp(1.0, i));
+    typename K::FT step = k_.epsilon();
+    for (int i = 1; i <= recovery_steps; ++i) {
+      step = step * typename K::FT(2);
+      Time later = base + step;
+      std::optional<tree::Kvd_tree> t = try_build(later);
+      if (t && accept(*t)) return std::pair{std::move(later), std::move(*t)};
+    }
+    return std::nullopt;
   }
 
   // The certificates of the tree in force, their failure times, the queue.
@@ -202,18 +210,16 @@ private:
   {
     if (b.changed || sim_.batches.empty() || sim_.batches.back().failing != b.failing) return;
     ++sim_.recovery.refires;
-    for (int i = 1; i <= recovery_steps; ++i) {
-      Time later = now_ + recovery_step(i);
-      std::optional<tree::Kvd_tree> t = try_build(later);
-      if (!t || !tree::first_difference(current_, *t)) continue;
-      adopt(std::move(*t), std::move(later));
+    auto later = step_forward(now_, [&](const tree::Kvd_tree& t) { return tree::first_difference(current_, t).has_value(); });
+    if (!later) {
+      ++sim_.recovery.unrepaired;
       return;
     }
-    ++sim_.recovery.unrepaired;
+    adopt(std::move(later->second), std::move(later->first));
   }
 
-  // Floating-point kernels: the tree in force found stale by validation is
-  // replaced by the fresh build at `mid`.
+  // Floating-point kernels: a repaired tree (a fresh build found by
+  // validation, or a later step) replaces the tree in force, at its instant.
   void adopt(tree::Kvd_tree t, Time at) {
     ++sim_.recovery.rebuilds;
     current_ = std::move(t);
