@@ -77,13 +77,6 @@ std::string csv(const std::vector<Row>& rows) {
   return out;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 // Per kernel: median seconds per event, the worst relative error, and how
 // many scenes diverged; then the whole table.
 std::string markdown(const std::vector<Row>& rows, const std::vector<std::string>& kernels, std::size_t events) {
@@ -108,7 +101,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<std::string
       spurious += r.d.spurious_events;
       repaired += r.d.recovery.failed_builds;
     }
-    out += "| " + k + " | " + cli::fixed(median(spe), 3) + " | " + cli::scientific(worst) + " | " +
+    out += "| " + k + " | " + cli::fixed(cli::median(spe), 3) + " | " + cli::scientific(worst) + " | " +
            std::to_string(diverging) + " of " + std::to_string(scenes) + " | " + std::to_string(not_reproduced) +
            " of " + std::to_string(total) + " | " + std::to_string(missed) + " | " + std::to_string(spurious) + " | " +
            std::to_string(repaired) + " |\n";

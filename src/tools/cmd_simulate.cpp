@@ -81,30 +81,6 @@ std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>&
   return out;
 }
 
-// The update-cost statistics of the thesis's Figures 8.6 and 8.7, in ms.
-struct Update_costs {
-  double average = 0, max = 0, stddev = 0, tree_share = 0, certificate_share = 0;
-};
-template <class Time>
-Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
-  Update_costs u;
-  if (sim.batches.empty()) return u;
-  double sum = 0, squares = 0, tree = 0;
-  for (const auto& b : sim.batches) {
-    const double ms = 1000 * (b.tree_seconds + b.certificate_seconds);
-    sum += ms;
-    squares += ms * ms;
-    tree += 1000 * b.tree_seconds;
-    u.max = std::max(u.max, ms);
-  }
-  const double n = static_cast<double>(sim.batches.size());
-  u.average = sum / n;
-  u.stddev = std::sqrt(std::max(0.0, squares / n - u.average * u.average));
-  u.tree_share = sum > 0 ? tree / sum : 0;
-  u.certificate_share = sum > 0 ? 1 - u.tree_share : 0;
-  return u;
-}
-
 std::string by_type_json(const kinetic::Type_counts& counts) {
   std::string out = "{";
   for (std::size_t i = 0; i < counts.size(); ++i)

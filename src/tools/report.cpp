@@ -2,6 +2,7 @@
 
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace kvd::cli {
@@ -16,6 +17,13 @@ std::string fixed(double x, int digits) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
   return buf;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 namespace {

@@ -3,7 +3,10 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "kvd/kinetic/simulation.hpp"
 
@@ -18,6 +21,37 @@ std::string fixed(double x, int digits);
 // digits ("1.25e-310": no underflow), and its base-10 logarithm (-inf for 0).
 std::string scientific(const mpq_class& q);
 double log10_of(const mpq_class& q);
+
+// The update-cost statistics of the thesis's Figures 8.6 and 8.7, in ms
+// per batch (all zero without batches).
+struct Update_costs {
+  double total = 0, average = 0, max = 0, stddev = 0, certificate_average = 0, tree_share = 0,
+         certificate_share = 0;
+};
+template <class Time>
+Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
+  Update_costs u;
+  if (sim.batches.empty()) return u;
+  double squares = 0, tree = 0, certificate = 0;
+  for (const auto& b : sim.batches) {
+    const double ms = 1000 * (b.tree_seconds + b.certificate_seconds);
+    u.total += ms;
+    squares += ms * ms;
+    tree += 1000 * b.tree_seconds;
+    certificate += 1000 * b.certificate_seconds;
+    u.max = std::max(u.max, ms);
+  }
+  const double n = static_cast<double>(sim.batches.size());
+  u.average = u.total / n;
+  u.stddev = std::sqrt(std::max(0.0, squares / n - u.average * u.average));
+  u.certificate_average = certificate / n;
+  u.tree_share = u.total > 0 ? tree / u.total : 0;
+  u.certificate_share = u.total > 0 ? certificate / u.total : 0;
+  return u;
+}
+
+// The median of v; 0 for none.
+double median(std::vector<double> v);
 
 // A floating-point run's recovery counts, as a JSON object and in words.
 std::string recovery_json(const kinetic::Recovery& r);
