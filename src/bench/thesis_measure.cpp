@@ -3,7 +3,6 @@
 // progress line on stderr.
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <iostream>
 #include <map>
 
@@ -23,12 +22,6 @@ double ms_since(std::chrono::steady_clock::time_point start) {
   return 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 std::string label(const Where& w) {
   return "kvd bench thesis: " + w.figure + ", " + w.family + " " + std::to_string(w.size) + ", " + w.kernel + ": ";
 }
@@ -37,6 +30,17 @@ template <class K>
 typename K::Time instant(const K& k, const mpq_class& t) {
   return k.time(from_rational<typename K::FT>(t));
 }
+
+// The end of a run's span as a rational: the value of a floating-point
+// time; for an exact one, the lower end of its isolating interval refined to
+// a width of 2^-64 of its size (the value itself when rational). Only the
+// instants of the rebuilds depend on it.
+mpq_class span_end(const Exact_time& t) {
+  while (!t.is_rational() && ((t.upper() - t.lower()) << 64) > abs(t.upper())) t.refine();
+  return t.lower();
+}
+mpq_class span_end(double t) { return to_rational(t); }
+mpq_class span_end(const Mpfr_number& t) { return to_rational(t); }
 
 template <class K>
 void construction_in(const K& k, const Where& w, const scene::Scene& s, Results& r) {
@@ -49,7 +53,7 @@ void construction_in(const K& k, const Where& w, const scene::Scene& s, Results&
     ms.push_back(ms_since(start));
     st = t.statistics();
   }
-  const double construction_ms = median(ms);
+  const double construction_ms = cli::median(ms);
   r.add(w, "p_nodes", static_cast<double>(st.p_nodes));
   r.add(w, "e_nodes", static_cast<double>(st.e_nodes));
   r.add(w, "t_nodes", static_cast<double>(st.t_nodes));
@@ -89,14 +93,14 @@ void gain_in(const K& k, const Where& w, const scene::Scene& s, const mpq_class&
   r.add(g, "span", mpq_class(end - s.start).get_d());
   r.add(g, "batches", static_cast<double>(batches));
   r.add(g, "kinetic_update_ms", kinetic_ms);
-  const double bsp = median(bsp_ms);
+  const double bsp = cli::median(bsp_ms);
   r.add(g, "bsp_rebuild_ms", bsp);
   for (std::size_t samples : sampling_counts)
     r.add(g, "bsp_gain_" + std::to_string(samples) + "_ms", static_cast<double>(samples) * bsp - kinetic_ms);
   std::cerr << label(g) << "kinetic " << cli::fixed(kinetic_ms, 1) << " ms, BSP rebuild " << cli::fixed(bsp, 2)
             << " ms";
   if (!kvd_ms.empty()) {
-    const double kvd = median(kvd_ms);
+    const double kvd = cli::median(kvd_ms);
     r.add(g, "kvd_rebuild_ms", kvd);
     for (std::size_t samples : sampling_counts)
       r.add(g, "kvd_gain_" + std::to_string(samples) + "_ms", static_cast<double>(samples) * kvd - kinetic_ms);
@@ -128,18 +132,8 @@ void simulation_in(const K& k, const Where& w, const scene::Scene& s, std::size_
   r.add(certificates, "et_certificates", count(Certificate_type::ET));
   r.add(certificates, "certificates", total);
 
-  // The update costs as kvd simulate computes them, per batch, in ms.
-  double sum = 0, squares = 0, tree = 0, certificate = 0, max = 0;
-  for (const auto& b : sim.batches) {
-    const double ms = 1000 * (b.tree_seconds + b.certificate_seconds);
-    sum += ms;
-    squares += ms * ms;
-    tree += 1000 * b.tree_seconds;
-    certificate += 1000 * b.certificate_seconds;
-    max = std::max(max, ms);
-  }
+  const cli::Update_costs u = cli::update_costs(sim);
   const double n = static_cast<double>(sim.batches.size());
-  const double average = n > 0 ? sum / n : 0;
   r.add(w, "events", static_cast<double>(sim.failures));
   r.add(w, "batches", n);
   r.add(w, "simultaneous_batches", static_cast<double>(sim.simultaneous_batches));
@@ -149,16 +143,16 @@ void simulation_in(const K& k, const Where& w, const scene::Scene& s, std::size_
   r.add(w, std::string("stopped_by_") + stops[static_cast<int>(sim.stopped)], 1);
   r.add(w, "recovery_detected", static_cast<double>(sim.recovery.detected()));
   r.add(w, "construction_ms", 1000 * sim.construction_seconds);
-  r.add(w, "total_update_ms", sum);
-  r.add(w, "average_update_ms", average);
-  r.add(w, "max_update_ms", max);
-  r.add(w, "stddev_update_ms", n > 0 ? std::sqrt(std::max(0.0, squares / n - average * average)) : 0);
-  r.add(w, "average_certificate_ms", n > 0 ? certificate / n : 0);
-  r.add(w, "tree_share", sum > 0 ? tree / sum : 0);
-  r.add(w, "certificate_share", sum > 0 ? certificate / sum : 0);
+  r.add(w, "total_update_ms", u.total);
+  r.add(w, "average_update_ms", u.average);
+  r.add(w, "max_update_ms", u.max);
+  r.add(w, "stddev_update_ms", u.stddev);
+  r.add(w, "average_certificate_ms", u.certificate_average);
+  r.add(w, "tree_share", u.tree_share);
+  r.add(w, "certificate_share", u.certificate_share);
   std::cerr << label(w) << total << " certificates at the start, " << sim.failures << " events in " << n
-            << " batches, average update " << cli::fixed(average, 2) << " ms\n";
-  if (gain) gain_in(k, w, s, to_rational(k.to_double(sim.time_reached)), sum, sim.batches.size(), r);
+            << " batches, average update " << cli::fixed(u.average, 2) << " ms\n";
+  if (gain) gain_in(k, w, s, span_end(sim.time_reached), u.total, sim.batches.size(), r);
 }
 
 }  // namespace
@@ -186,9 +180,9 @@ void bsp_construction(const Where& w, const scene::Scene& s, Results& r) {
     ms.push_back(ms_since(start));
     fragments = t.fragments();
   }
-  r.add(w, "bsp_construction_ms", median(ms));
+  r.add(w, "bsp_construction_ms", cli::median(ms));
   r.add(w, "bsp_fragments", static_cast<double>(fragments));
-  std::cerr << label(w) << "BSP " << fragments << " fragments, " << cli::fixed(median(ms), 2) << " ms\n";
+  std::cerr << label(w) << "BSP " << fragments << " fragments, " << cli::fixed(cli::median(ms), 2) << " ms\n";
 }
 
 void culling(const Where& w, const scene::Scene& s, Results& r) {
