@@ -49,12 +49,17 @@ const std::vector<std::string> default_kernels{"double",   "mpfr:24",   "mpfr:53
 
 struct Row {
   std::string scene, kernel;
-  std::size_t events = 0;
-  double seconds = 0;
   kinetic::Differential d;
-  std::size_t not_reproduced = 0;  // exact events missed, out of order or followed by another tree
-  double seconds_per_event() const { return events ? seconds / static_cast<double>(events) : 0; }
-  double share() const { return events ? static_cast<double>(not_reproduced) / static_cast<double>(events) : 0; }
+  std::size_t events() const { return d.events.size(); }
+  double seconds() const { return d.seconds_inexact; }
+  // Exact events missed, out of order or followed by another tree.
+  std::size_t not_reproduced() const {
+    return static_cast<std::size_t>(std::count_if(d.events.begin(), d.events.end(), [](const auto& m) {
+      return !m.inexact_event || !m.in_order || !m.structure_equal;
+    }));
+  }
+  double seconds_per_event() const { return events() ? seconds() / static_cast<double>(events()) : 0; }
+  double share() const { return events() ? static_cast<double>(not_reproduced()) / static_cast<double>(events()) : 0; }
 };
 
 std::string csv(const std::vector<Row>& rows) {
@@ -65,7 +70,7 @@ std::string csv(const std::vector<Row>& rows) {
   for (const Row& r : rows) {
     const auto& d = r.d;
     const std::string log10 = d.max_relative_time_error > 0 ? cli::fixed(cli::log10_of(d.max_relative_time_error), 3) : "NaN";
-    out += r.scene + "," + r.kernel + "," + std::to_string(r.events) + "," + cli::fixed(r.seconds, 6) + "," +
+    out += r.scene + "," + r.kernel + "," + std::to_string(r.events()) + "," + cli::fixed(r.seconds(), 6) + "," +
            cli::approx(r.seconds_per_event()) + "," + cli::scientific(d.max_time_error) + "," +
            cli::scientific(d.max_relative_time_error) + "," + log10 + "," + std::to_string(d.order_mismatches) + "," +
            std::to_string(d.missed_events) + "," + std::to_string(d.spurious_events) + "," +
@@ -95,8 +100,8 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<std::string
       spe.push_back(1000 * r.seconds_per_event());
       if (r.d.max_relative_time_error > worst) worst = r.d.max_relative_time_error;
       diverging += r.d.first_divergence_event.has_value();
-      not_reproduced += r.not_reproduced;
-      total += r.events;
+      not_reproduced += r.not_reproduced();
+      total += r.events();
       missed += r.d.missed_events;
       spurious += r.d.spurious_events;
       repaired += r.d.recovery.failed_builds;
@@ -110,7 +115,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<std::string
          "| scene | kernel | events | ms per event | max relative time error | first divergence | "
          "order | missed | spurious | structure |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Row& r : rows)
-    out += "| " + r.scene + " | " + r.kernel + " | " + std::to_string(r.events) + " | " +
+    out += "| " + r.scene + " | " + r.kernel + " | " + std::to_string(r.events()) + " | " +
            cli::fixed(1000 * r.seconds_per_event(), 3) + " | " + cli::scientific(r.d.max_relative_time_error) + " | " +
            (r.d.first_divergence_event ? std::to_string(*r.d.first_divergence_event) : "-") + " | " +
            std::to_string(r.d.order_mismatches) + " | " + std::to_string(r.d.missed_events) + " | " +
@@ -190,15 +195,12 @@ int accuracy(cli::Args& args) {
       Row r;
       r.scene = scenes[i];
       r.kernel = name;
-      r.events = exact.sim.failures;
       r.d = cli::with_kernel("bench accuracy", name, [&](const auto& k) {
         return kinetic::compare_with(exact, k, loaded[i]);
       });
-      r.seconds = r.d.seconds_inexact;
-      for (const auto& m : r.d.events) r.not_reproduced += !m.inexact_event || !m.in_order || !m.structure_equal;
-      std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events << " events, "
-                << cli::fixed(r.seconds, 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
-                << ", " << r.not_reproduced << " not reproduced\n";
+      std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events() << " events, "
+                << cli::fixed(r.seconds(), 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
+                << ", " << r.not_reproduced() << " not reproduced\n";
       rows.push_back(std::move(r));
     }
   }
