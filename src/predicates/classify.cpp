@@ -18,9 +18,10 @@ int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t
 }
 
 template <class K>
-bool Classifier<K>::vanishes(const typename K::Poly& f) const {
-  for (const auto& c : f.coefficients())
-    if (k_->sign(c) != 0) return false;
+bool Classifier<K>::vanishes(const typename K::Poly& f, int from) const {
+  const auto& c = f.coefficients();
+  for (std::size_t i = static_cast<std::size_t>(from); i < c.size(); ++i)
+    if (k_->sign(c[i]) != 0) return false;
   return true;
 }
 

@@ -9,18 +9,15 @@ namespace kvd::kinetic {
 
 // The non-constant polynomials of `polys`, each multiplied by its sign just
 // after `now`; constants (and zero) are dropped: they never fail. Constant
-// means by the kernel's zero test on the coefficients of t, t^2, ...: in a
+// is by the kernel's zero test (Classifier::vanishes from t^1): in a
 // floating-point kernel a value that is constant exactly (a vertex against
-// a plane of its own rigid triangle) keeps rounding noise there.
+// a plane of its own rigid triangle) keeps rounding noise in t, t^2, ....
 template <class K, class Range>
 std::vector<typename K::Poly> positive(const predicates::Classifier<K>& c, const Range& polys,
                                        const typename K::Time& now) {
   std::vector<typename K::Poly> out;
-  for (const auto& q : polys) {
-    bool varies = false;
-    for (int i = 1; i <= q.degree() && !varies; ++i) varies = c.kernel().sign(q[i]) != 0;
-    if (varies) out.push_back(c.lex_sign(q, now) < 0 ? -q : q);
-  }
+  for (const auto& q : polys)
+    if (!c.vanishes(q, 1)) out.push_back(c.lex_sign(q, now) < 0 ? -q : q);
   return out;
 }
 

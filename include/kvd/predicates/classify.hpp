@@ -65,6 +65,12 @@ public:
   const Point4<typename K::Poly>& point_poly(const symbolic::Symbolic_vertex& v) const;
   // The sign of f at t, or just after t where f(t) = 0 (zero only for f = 0).
   int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
+  // Whether the coefficients of t^from, t^(from+1), ... of f are all zero by
+  // the kernel's test: "identically zero" (from = 0) or "constant" (from = 1)
+  // exactly in the exact kernel, within epsilon in the others (so a
+  // configuration degenerate in the scene's rationals, such as a vertical
+  // triangle, goes to the perturbation there too, not to rounding noise).
+  bool vanishes(const typename K::Poly& f, int from = 0) const;
   // The position of v in the perturbed scene as ε -> 0+: its motion point,
   // or, where that vanishes identically (v built from planes that coincide
   // in the unperturbed scene, such as P(v) and E(e) of an edge parallel to
@@ -91,11 +97,6 @@ private:
   // every batch and classifies mostly the same pairs again.
   const Deciding& deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
   Deciding decide(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
-  // Whether every coefficient of f is zero by the kernel's test: "identically
-  // zero" is exact in the exact kernel, within epsilon in the others (so a
-  // configuration degenerate in the scene's rationals, such as a vertical
-  // triangle, goes to the perturbation there too, not to rounding noise).
-  bool vanishes(const typename K::Poly& f) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
 
   const K* k_;
