@@ -2,167 +2,21 @@
 
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/symbolic/incidence.hpp"
+#include "kvd/tree/operations.hpp"
 
 namespace kvd::tree {
 
-namespace {
-
-using SE = symbolic::Symbolic_edge;
-using SP = Symbolic_plane;
-using SV = Symbolic_vertex;
-
-template <class K>
-class Builder {
-public:
-  Builder(const predicates::Classifier<K>& c, const typename K::Time& t, Evaluated* evaluated)
-      : c_(c), t_(t), s_(c.motion().scene()), evaluated_(evaluated) {}
-
-  Kvd_tree run() {
-    for (std::size_t t : s_.priority_order) {
-      const std::size_t base = 7 * s_.triangle_priority[t];
-      const auto& tv = s_.triangles[t];
-      const auto& te = s_.triangle_edges[t];
-      for (std::size_t k = 0; k < 3; ++k)
-        if (s_.vertex_cut_priority[tv[k]] == base + k) insert({SP::Kind::P, tv[k]}, SV::endpoint(tv[k]));
-      for (std::size_t k = 0; k < 3; ++k)
-        if (s_.edge_cut_priority[te[k]] == base + 3 + k) {
-          const auto& e = s_.edges[te[k]];
-          insert({SP::Kind::E, te[k]}, Edge_fragment{SV::endpoint(e[0]), SV::endpoint(e[1]), SE{SE::Kind::edge, te[k], 0}});
-        }
-      Triangle_fragment f;
-      for (std::size_t k = 0; k < 3; ++k) {
-        f.corners.push_back(SV::endpoint(tv[k]));
-        f.sides.push_back(SE{SE::Kind::edge, te[k], 0});
-      }
-      insert({SP::Kind::T, t}, std::move(f));
-    }
-    return std::move(tree_);
-  }
-
-private:
-  // Filters (cut, fragment) down from the root; iterative over the path,
-  // recursive only where a fragment splits.
-  void insert(const SP& cut, Fragment f) { insert_below(-1, false, cut, std::move(f)); }
-
-  void insert_below(int parent, bool right, const SP& cut, Fragment f) {
-    for (;;) {
-      const int at = parent < 0 ? tree_.root : (right ? node(parent).right : node(parent).left);
-      if (at < 0) {
-        tree_.nodes.push_back(Node{cut, std::move(f)});
-        const int i = static_cast<int>(tree_.nodes.size()) - 1;
-        if (parent < 0) tree_.root = i;
-        else if (right) node(parent).right = i;
-        else node(parent).left = i;
-        return;
-      }
-      const SP plane = node(at).cut;
-      auto [neg, pos] = split(f, plane, cut);
-      if (neg && pos) {
-        insert_below(at, false, cut, std::move(*neg));
-        parent = at, right = true, f = std::move(*pos);
-      } else {
-        parent = at, right = pos.has_value(), f = std::move(pos ? *pos : *neg);
-      }
-    }
-  }
-
-  Node& node(int i) { return tree_.nodes[static_cast<std::size_t>(i)]; }
-
-  int side(const SV& v, const SP& p) const {
-    if (evaluated_) evaluated_->emplace_back(v, p);
-    return c_.side(v, p, t_);
-  }
-
-  // The vertex where `edge` crosses `plane`.
-  SV crossing(const SE& edge, const SP& plane) const {
-    if (plane.kind == SP::Kind::T)
-      throw Build_error("a fragment crosses the plane of triangle " + std::to_string(plane.id) +
-                        ": the triangles intersect at the build instant");
-    const bool p_cut = plane.kind == SP::Kind::P;
-    SV v{};
-    switch (edge.kind) {
-      case SE::Kind::edge: v = p_cut ? SV::thread(edge.a, plane.id) : SV::intersection(edge.a, plane.id); break;
-      // Two P-planes meet only on the axis x ∨ z (a Euclidean z makes them a pencil).
-      case SE::Kind::pt: v = p_cut ? SV::axis(edge.b) : SV::internal_thread(edge.a, plane.id, edge.b); break;
-      case SE::Kind::et:
-        v = p_cut ? SV::internal_thread(plane.id, edge.a, edge.b) : SV::internal_intersection(edge.a, plane.id, edge.b);
-        break;
-    }
-    return symbolic::canonical(s_, v);
-  }
-
-  using Piece = std::optional<Fragment>;
-
-  // The parts of f, a fragment of `cut`, on the negative and the positive
-  // side of the plane.
-  std::pair<Piece, Piece> split(const Fragment& f, const SP& plane, const SP& cut) const {
-    if (const auto* v = std::get_if<SV>(&f)) {
-      // A point on the plane can only be one that lies there by construction
-      // and never happens in priority order; it goes to the positive side.
-      if (side(*v, plane) < 0) return {f, std::nullopt};
-      return {std::nullopt, f};
-    }
-    if (const auto* e = std::get_if<Edge_fragment>(&f)) {
-      const int sa = side(e->a, plane), sb = side(e->b, plane);
-      if (sa <= 0 && sb <= 0 && (sa < 0 || sb < 0)) return {f, std::nullopt};
-      if (sa >= 0 && sb >= 0) return {std::nullopt, f};
-      const SV x = crossing(e->edge, plane);
-      const Edge_fragment first{e->a, x, e->edge}, second{x, e->b, e->edge};
-      return sa < 0 ? std::pair<Piece, Piece>{first, second} : std::pair<Piece, Piece>{second, first};
-    }
-    const auto& t = std::get<Triangle_fragment>(f);
-    std::vector<int> s;
-    bool any_neg = false, any_pos = false;
-    for (const auto& c : t.corners) {
-      s.push_back(side(c, plane));
-      any_neg = any_neg || s.back() < 0;
-      any_pos = any_pos || s.back() > 0;
-    }
-    if (!any_pos) return {f, std::nullopt};
-    if (!any_neg) return {std::nullopt, f};
-    // A triangle fragment travels with its own T-cut: cut.id is its triangle.
-    const SE cut_line{plane.kind == SP::Kind::P ? SE::Kind::pt : SE::Kind::et, plane.id, cut.id};
-    return {clip(t, s, -1, plane, cut_line), clip(t, s, +1, plane, cut_line)};
-  }
-
-  // The part of a crossed triangle fragment on side `keep` (corners keep
-  // their order; new corners where sides cross, joined by the cut line).
-  // Internal sides already name their triangle, as cut_line does.
-  Triangle_fragment clip(const Triangle_fragment& t, const std::vector<int>& s, int keep, const SP& plane,
-                         const SE& cut_line) const {
-    Triangle_fragment out;
-    const std::size_t n = t.corners.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t j = (i + 1) % n;
-      const int si = s[i] * keep, sj = s[j] * keep;
-      if (si >= 0) {
-        out.corners.push_back(t.corners[i]);
-        out.sides.push_back(sj < 0 ? (si > 0 ? t.sides[i] : cut_line) : t.sides[i]);
-        if (si > 0 && sj < 0) {
-          out.corners.push_back(crossing(t.sides[i], plane));
-          out.sides.push_back(cut_line);
-        }
-      } else if (sj > 0) {
-        out.corners.push_back(crossing(t.sides[i], plane));
-        out.sides.push_back(t.sides[i]);
-      }
-    }
-    return out;
-  }
-
-  const predicates::Classifier<K>& c_;
-  const typename K::Time& t_;
-  const scene::Scene& s_;
-  Kvd_tree tree_;
-  Evaluated* evaluated_;
-};
-
-}  // namespace
-
+// Every site inserted in priority order: each insertion then only descends
+// to the leaves (the out-of-order case of insert never arises).
 template <class K>
 Kvd_tree build(const predicates::Classifier<K>& classifier, const typename K::Time& t, Evaluated* evaluated) {
-  return Builder<K>(classifier, t, evaluated).run();
+  const Fragment_splitter<K> split(classifier, t, evaluated);
+  Kvd_tree tree;
+  Tree_editor<K> editor(tree, split);
+  const scene::Scene& s = classifier.motion().scene();
+  for (const Symbolic_plane& site : sites_in_priority_order(s))
+    tree.root = editor.insert(tree.root, site, site_fragment(s, site));
+  return tree;
 }
 
 #define KVD_INSTANTIATE_BUILD(K) \

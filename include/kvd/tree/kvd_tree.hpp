@@ -37,6 +37,8 @@ class Kvd_tree {
 public:
   std::vector<Node> nodes;
   int root = -1;
+  // Slots of nodes that local updates removed, for reuse; no longer linked.
+  std::vector<int> free_nodes;
 
   // Of the whole tree, or of the subtree rooted at node `subtree`.
   Tree_statistics statistics() const { return statistics(root); }

@@ -1,0 +1,100 @@
+#include "kvd/tree/fragment_split.hpp"
+
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/symbolic/incidence.hpp"
+
+namespace kvd::tree {
+
+namespace {
+using SE = symbolic::Symbolic_edge;
+using SP = Symbolic_plane;
+using SV = Symbolic_vertex;
+}  // namespace
+
+template <class K>
+int Fragment_splitter<K>::side(const SV& v, const SP& p) const {
+  if (evaluated_) evaluated_->emplace_back(v, p);
+  return c_.side(v, p, t_);
+}
+
+// The vertex where `edge` crosses `plane`.
+template <class K>
+SV Fragment_splitter<K>::crossing(const SE& edge, const SP& plane) const {
+  if (plane.kind == SP::Kind::T)
+    throw Build_error("a fragment crosses the plane of triangle " + std::to_string(plane.id) +
+                      ": the triangles intersect at the build instant");
+  const bool p_cut = plane.kind == SP::Kind::P;
+  SV v{};
+  switch (edge.kind) {
+    case SE::Kind::edge: v = p_cut ? SV::thread(edge.a, plane.id) : SV::intersection(edge.a, plane.id); break;
+    // Two P-planes meet only on the axis x ∨ z (a Euclidean z makes them a pencil).
+    case SE::Kind::pt: v = p_cut ? SV::axis(edge.b) : SV::internal_thread(edge.a, plane.id, edge.b); break;
+    case SE::Kind::et:
+      v = p_cut ? SV::internal_thread(plane.id, edge.a, edge.b) : SV::internal_intersection(edge.a, plane.id, edge.b);
+      break;
+  }
+  return symbolic::canonical(c_.motion().scene(), v);
+}
+
+template <class K>
+std::pair<Piece, Piece> Fragment_splitter<K>::split(const Fragment& f, const SP& plane, const SP& cut) const {
+  if (const auto* v = std::get_if<SV>(&f)) {
+    // A point on the plane can only be one that lies there by construction
+    // and never happens in priority order; it goes to the positive side.
+    if (side(*v, plane) < 0) return {f, std::nullopt};
+    return {std::nullopt, f};
+  }
+  if (const auto* e = std::get_if<Edge_fragment>(&f)) {
+    const int sa = side(e->a, plane), sb = side(e->b, plane);
+    if (sa <= 0 && sb <= 0 && (sa < 0 || sb < 0)) return {f, std::nullopt};
+    if (sa >= 0 && sb >= 0) return {std::nullopt, f};
+    const SV x = crossing(e->edge, plane);
+    const Edge_fragment first{e->a, x, e->edge}, second{x, e->b, e->edge};
+    return sa < 0 ? std::pair<Piece, Piece>{first, second} : std::pair<Piece, Piece>{second, first};
+  }
+  const auto& t = std::get<Triangle_fragment>(f);
+  std::vector<int> s;
+  bool any_neg = false, any_pos = false;
+  for (const auto& c : t.corners) {
+    s.push_back(side(c, plane));
+    any_neg = any_neg || s.back() < 0;
+    any_pos = any_pos || s.back() > 0;
+  }
+  if (!any_pos) return {f, std::nullopt};
+  if (!any_neg) return {std::nullopt, f};
+  // A triangle fragment travels with its own T-cut: cut.id is its triangle.
+  const SE cut_line{plane.kind == SP::Kind::P ? SE::Kind::pt : SE::Kind::et, plane.id, cut.id};
+  return {clip(t, s, -1, plane, cut_line), clip(t, s, +1, plane, cut_line)};
+}
+
+// The part of a crossed triangle fragment on side `keep` (corners keep
+// their order; new corners where sides cross, joined by the cut line).
+// Internal sides already name their triangle, as cut_line does.
+template <class K>
+Triangle_fragment Fragment_splitter<K>::clip(const Triangle_fragment& t, const std::vector<int>& s, int keep,
+                                           const SP& plane, const SE& cut_line) const {
+  Triangle_fragment out;
+  const std::size_t n = t.corners.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const int si = s[i] * keep, sj = s[j] * keep;
+    if (si >= 0) {
+      out.corners.push_back(t.corners[i]);
+      out.sides.push_back(sj < 0 ? (si > 0 ? t.sides[i] : cut_line) : t.sides[i]);
+      if (si > 0 && sj < 0) {
+        out.corners.push_back(crossing(t.sides[i], plane));
+        out.sides.push_back(cut_line);
+      }
+    } else if (sj > 0) {
+      out.corners.push_back(crossing(t.sides[i], plane));
+      out.sides.push_back(t.sides[i]);
+    }
+  }
+  return out;
+}
+
+#define KVD_INSTANTIATE_SPLITTER(K) template class Fragment_splitter<K>;
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SPLITTER)
+
+}  // namespace kvd::tree
