@@ -55,7 +55,7 @@ std::vector<Certificate<typename K::Poly>> full_certificates(const predicates::C
   for (const auto& [v, p] : evaluated) {
     auto polys = positive(c, c.certificate(v, p), now);
     if (!polys.empty())
-      out.push_back({type_of(v, p), symbolic::to_string(v) + " " + symbolic::to_string(p), holder.at(p), std::move(polys)});
+      out.push_back({type_of(v, p), symbolic::to_string(v) + " " + symbolic::to_string(p), holder.at(p), std::move(polys), {v}, {p}});
   }
   return out;
 }

@@ -134,7 +134,7 @@ private:
     const std::string nodes = "E(" + std::to_string(s.ids[0]) + ") E(" + std::to_string(s.ids[1]) + ")";
     P d = coplanar(m.vertex(e[0]), m.vertex(e[1]), m.vertex(ej[0]), m.vertex(ej[1]));
     if (d.is_zero()) d = c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()});
-    add({Certificate_type::ET, nodes, at_, positive(c_, std::vector<P>{d}, now_)});
+    add({Certificate_type::ET, nodes, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, SP{SP::Kind::E, s.ids[1]}}});
   }
 
   // The intersection points an E-node's fragment ends at.
@@ -225,12 +225,12 @@ private:
   void emit(const Spec& s) {
     if (s.plane) {
       add({s.type, symbolic::to_string(s.vertex) + " " + symbolic::to_string(*s.plane), at_,
-           positive(c_, std::vector<P>{c_.value(s.vertex, *s.plane)}, now_)});
+           positive(c_, std::vector<P>{c_.value(s.vertex, *s.plane)}, now_), {s.vertex}, {*s.plane}});
       return;
     }
     // II (thesis 6.3.7): two intersection points at the same height.
     add({s.type, symbolic::to_string(s.vertex) + " P(" + symbolic::to_string(s.other) + ")", at_,
-         positive(c_, std::vector<P>{dot(p_cut(s.other), c_.position(s.vertex))}, now_)});
+         positive(c_, std::vector<P>{dot(p_cut(s.other), c_.position(s.vertex))}, now_), {s.vertex, s.other}, {}});
   }
 
   void add(Certificate<P> cert) {

@@ -4,10 +4,13 @@
 #include <chrono>
 #include <type_traits>
 #include <map>
+#include <stdexcept>
+#include <set>
 
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/kinetic/local_update.hpp"
 #include "kvd/predicates/classify.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
@@ -48,6 +51,8 @@ class Simulator {
 public:
   Simulator(const K& k, const scene::Scene& s, const Options& o, Observer<K>* observer)
       : k_(k), c_(k, s), oracle_(k, s), o_(o), observer_(observer), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
+    if (o.update == Update::local && o.certificates == Certificate_set::full)
+      throw std::invalid_argument("the full certificate set is what a build evaluates: use it with --update rebuild");
     sim_.limit = o.until;
     if (s.end && (!sim_.limit || *s.end < *sim_.limit)) sim_.limit = *s.end;
     if (sim_.limit) limit_ = k.time(from_rational<FT>(*sim_.limit));
@@ -92,7 +97,7 @@ public:
       std::sort(batch.failing.begin(), batch.failing.end());
       const auto tree_start = std::chrono::steady_clock::now();
       Time at = *next;
-      std::optional<tree::Kvd_tree> after = build_at(at);
+      std::optional<tree::Kvd_tree> after = o_.update == Update::local ? update_locally(at, batch) : build_at(at);
       if (!after) {
         sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + build_error_ + colliding(batch);
         sim_.stopped = Stop::collision;
@@ -137,6 +142,26 @@ private:
       build_error_ = e.what();
       return std::nullopt;
     }
+  }
+
+  // The tree in force changed by the local update of the batch failing at
+  // `at`; none when triangles meet there (the tree in force then stays).
+  // A floating-point kernel whose update throws repairs with the recovery's
+  // builds.
+  std::optional<tree::Kvd_tree> update_locally(Time& at, Batch<Time>& batch) {
+    std::set<symbolic::Symbolic_plane> moving;
+    for (std::size_t id : queue_->first()) moving.merge(moving_sites(c_.motion().scene(), certs_[id]));
+    tree::Kvd_tree t = current_;
+    try {
+      const Update_cost cost = local_update(t, tree::Fragment_splitter<K>(c_, at), moving);
+      batch.moving_sites = cost.sites;
+      batch.nodes_touched = cost.nodes_touched;
+      return t;
+    } catch (const tree::Build_error& e) {
+      build_error_ = e.what();
+    }
+    if constexpr (floating) return build_at(at);
+    return std::nullopt;
   }
 
   // The tree valid just after `at`; none when triangles meet there. A

@@ -17,10 +17,9 @@ const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
     "                    [--kernel exact|double|mpfr:BITS] [--epsilon E]\n"
     "                    [--certificates reduced|full] [--queue tree|heap]\n"
-    "                    [--trace FILE] [--list] [--json]\n"
+    "                    [--update local|rebuild] [--trace FILE] [--list] [--json]\n"
     "\n"
-    "Runs the kinetic KVD from the scene's start with the reference update\n"
-    "(rebuild just after each batch), until the scene's end, the last event, the\n"
+    "Runs the kinetic KVD from the scene's start, until the scene's end, the last event, the\n"
     "batch holding the N-th certificate failure (default 100), or the last batch\n"
     "at a time <= T. Failures at the same algebraic time are one batch. With\n"
     "--validate every (the default), the tree in force between two batches is\n"
@@ -30,8 +29,12 @@ const char* const simulate_help =
     "message and status 0. Prints the statistics of the thesis's Figures\n"
     "8.5-8.7; progress goes to stderr every 100 batches.\n"
     "\n"
+    "  --update U        local (default): the thesis's local update (thesis 7.3),\n"
+    "                    which moves only the sites of the failing certificates'\n"
+    "                    features; rebuild: the reference, a build just after each batch\n"
     "  --certificates S  reduced (default): the thesis's set (thesis 6.4);\n"
-    "                    full: every sign the construction evaluated\n"
+    "                    full: every sign the construction evaluated (implies\n"
+    "                    --update rebuild, the build being what evaluates them)\n"
     "  --queue Q         tree (default): the kinetic priority queue in the KVD\n"
     "                    (thesis 6.5); heap: a mutable pairing heap\n"
     "  --kernel K        exact (default); double or mpfr:BITS group the failures\n"
@@ -45,7 +48,8 @@ const char* const simulate_help =
     "  --trace FILE      one JSON line per certificate failure (format in the README)\n"
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
-    "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL}, ...],\n"
+    "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
+    "           \"nodes_touched\": N}, ...], \"update\": U, \"nodes_touched\": {\"median\", \"below_10_share\"},\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
@@ -106,6 +110,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const Update_costs u = update_costs(sim);
   const char* set = o.certificates == kinetic::Certificate_set::reduced ? "reduced" : "full";
   const char* queue = o.queue == kinetic::Queue_kind::tree ? "tree" : "heap";
+  const char* update = o.update == kinetic::Update::local ? "local" : "rebuild";
+  const Touched touched = nodes_touched(sim);
   if (json) {
     std::cout << "{\"kernel\": " << json_string(K::name) << ", \"certificate_set\": " << json_string(set)
               << ", \"queue\": " << json_string(queue) << ", \"batch_list\": [";
@@ -113,9 +119,11 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
       const auto& e = sim.batches[i];
       std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
                 << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failures()
-                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false") << "}";
+                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false")
+                << ", \"nodes_touched\": " << e.nodes_touched << "}";
     }
-    std::cout << "], \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
+    std::cout << "], \"update\": " << json_string(update) << ", \"nodes_touched\": {\"median\": " << fixed(touched.median, 1)
+              << ", \"below_10_share\": " << fixed(touched.below_10_share, 3) << "}, \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
               << ", \"simultaneous_batches\": " << sim.simultaneous_batches
               << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
               << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
@@ -136,7 +144,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                   << "): " << e.failures() << " of " << e.certificates << " certificates fail, tree "
                   << (e.changed ? "changed" : "unchanged") << "\n";
       }
-    std::cout << "kernel:        " << K::name << ", " << set << " certificates, " << queue << " queue\n"
+    std::cout << "kernel:        " << K::name << ", " << set << " certificates, " << queue << " queue, " << update
+              << " update\n"
               << "events:        " << sim.failures << " certificate failures in " << sim.batches.size() << " batches ("
               << sim.simultaneous_batches << " simultaneous)\n"
               << "time reached:  " << approx(k.to_double(sim.time_reached)) << "\n"
@@ -146,6 +155,10 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << "construction:  " << fixed(1000 * sim.construction_seconds, 3) << " ms\n"
               << "update (ms):   average " << fixed(u.average, 3) << ", max " << fixed(u.max, 3) << ", stddev "
               << fixed(u.stddev, 3) << "\n"
+              << (o.update == kinetic::Update::local
+                      ? "nodes touched: median " + fixed(touched.median, 1) + " per batch, " +
+                            fixed(100 * touched.below_10_share, 1) + "% of batches below 10\n"
+                      : std::string())
               << "update shares: tree " << fixed(u.tree_share, 2) << ", certificates " << fixed(u.certificate_share, 2)
               << "\n";
     if (sim.recovery.detected()) std::cout << "recovery:      " << recovery_text(sim.recovery) << "\n";
@@ -167,6 +180,7 @@ int simulate(Args& args) {
   std::optional<mpq_class> epsilon;
   std::string kernel = "exact";
   bool list = false;
+  std::optional<kinetic::Update> update;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -189,9 +203,18 @@ int simulate(Args& args) {
       if (v == "tree") o.queue = kinetic::Queue_kind::tree;
       else if (v == "heap") o.queue = kinetic::Queue_kind::heap;
       else throw Usage_error("kvd simulate: --queue expects tree or heap");
+    } else if (a == "--update") {
+      const std::string& v = args.value(a);
+      if (v == "local") update = kinetic::Update::local;
+      else if (v == "rebuild") update = kinetic::Update::rebuild;
+      else throw Usage_error("kvd simulate: --update expects local or rebuild");
     } else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
     else if (!sa.take(args, a)) args.unknown(a);
   }
+  if (o.certificates == kinetic::Certificate_set::full && update == kinetic::Update::local)
+    throw Usage_error("kvd simulate: the full certificate set needs --update rebuild");
+  o.update = update.value_or(o.certificates == kinetic::Certificate_set::full ? kinetic::Update::rebuild
+                                                                            : kinetic::Update::local);
   const scene::Scene s = sa.load_scene("simulate");
   o.progress = [](std::size_t batches, std::size_t failures) {
     if (batches % 100 == 0) std::cerr << "kvd simulate: " << batches << " batches, " << failures << " failures\n";

@@ -53,6 +53,19 @@ Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
 // The median of v; 0 for none.
 double median(std::vector<double> v);
 
+// Nodes touched per batch by the local update (thesis 7.3).
+struct Touched {
+  double median = 0;
+  double below_10_share = 0;  // of batches touching fewer than 10 nodes
+};
+template <class Time>
+Touched nodes_touched(const kinetic::Simulation<Time>& sim) {
+  std::vector<double> n;
+  for (const auto& b : sim.batches) n.push_back(static_cast<double>(b.nodes_touched));
+  const auto below = std::count_if(n.begin(), n.end(), [](double x) { return x < 10; });
+  return {median(n), n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size())};
+}
+
 // A floating-point run's recovery counts, as a JSON object and in words.
 std::string recovery_json(const kinetic::Recovery& r);
 std::string recovery_text(const kinetic::Recovery& r);

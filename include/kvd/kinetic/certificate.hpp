@@ -39,6 +39,10 @@ struct Certificate {
   std::string nodes;        // the symbolic features, e.g. "SV(v3) P(7)"; its identity
   int node;                 // the tree node holding it (the kinetic priority queue's slot)
   std::vector<Poly> polys;  // non-constant, each positive just after the time it was made
+  // The features it names: when it fails, the sites holding them move
+  // (kinetic/local_update.hpp).
+  std::vector<symbolic::Symbolic_vertex> vertices;
+  std::vector<symbolic::Symbolic_plane> planes;
 };
 
 enum class Certificate_set { reduced, full };

@@ -1,8 +1,10 @@
-// The kinetic KVD with the reference update (DESIGN.md section 5): the
-// certificates of the tree in force (the reduced or the full set) go into an
-// event queue; the next batch is every certificate failing at the earliest
-// failure time after the current one; the update rebuilds the tree valid
-// just after it and recomputes every certificate.
+// The kinetic KVD: the certificates of the tree in force (the reduced or the
+// full set) go into an event queue; the next batch is every certificate
+// failing at the earliest failure time after the current one; the update
+// makes the tree valid just after it, locally (thesis 7.3) or by the
+// reference rebuild (DESIGN.md section 5), and recomputes the certificates.
+// The full set is the classifications a build evaluated, so it needs the
+// rebuild.
 //
 // In the exact kernel event times are algebraic numbers ordered exactly and
 // a batch is an exact equality. The floating-point kernels compare times
@@ -57,7 +59,9 @@ struct Batch {
   std::size_t certificates = 0;  // in force before the batch
   bool changed = false;          // whether the tree just after differs from the tree before
   std::string structure;         // the structure hash of the tree just after
-  double tree_seconds = 0;         // rebuilding the tree
+  std::size_t moving_sites = 0;   // --update local: the sites the batch moved
+  std::size_t nodes_touched = 0;  // --update local: the nodes the update touched
+  double tree_seconds = 0;         // updating the tree
   double certificate_seconds = 0;  // making the certificates, their failure times and the queue
   std::size_t failures() const { return failing.size(); }
 };
@@ -100,12 +104,17 @@ struct Simulation {
 
 enum class Validation { every, end, none };
 
+// How a batch changes the tree: by the local update of thesis 7.3
+// (kinetic/local_update.hpp), or by the reference rebuild.
+enum class Update { local, rebuild };
+
 struct Options {
   std::size_t max_events = 100;             // stop after the batch holding the N-th failure
   std::optional<mpq_class> until;           // process every batch at a time <= until
   Validation validate = Validation::every;  // between every two batches, or only the last
   Certificate_set certificates = Certificate_set::reduced;
   Queue_kind queue = Queue_kind::tree;
+  Update update = Update::local;
   // Called after every batch with the number of batches and of failures so far.
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };

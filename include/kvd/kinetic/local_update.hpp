@@ -1,0 +1,46 @@
+// The local update of thesis 7.3: the tree just after a batch of events,
+// obtained from the tree in force by the operations of thesis 7.2 alone.
+//
+// A failing certificate names features (its vertex, its plane's feature,
+// the edges of an intersection point); the sites holding them are the
+// moving sites. V-update (VV, VE and the vertex certificates) moves the
+// sites of a vertex: its P-cut and the E- and T-cuts of its edges and
+// triangles. E-update (IV, II, ET) moves the sites of an edge: its E-cut and
+// the T-cuts of its triangles. A batch moves the union of its events' sites.
+//
+// The update drags every node of a moving site out of the tree, lowest
+// priority first, so each drag merges subtrees that hold no moving site
+// (the thesis's MERGE effects), then inserts the moving sites again from
+// the root in priority order, out of order where they meet lower-priority
+// nodes (the thesis's SPLIT effects: the pieces land wherever the sites now
+// are). The part of the tree that holds no moving site is the tree of the
+// other sites, which no failing sign involves, so it is unchanged by the
+// batch; the insertions then give the tree just after it, whatever order the
+// batch's events would be taken in (proofs/local_update.md).
+#pragma once
+
+#include <cstddef>
+#include <set>
+#include <vector>
+
+#include "kvd/kinetic/certificate.hpp"
+#include "kvd/scene/scene.hpp"
+#include "kvd/tree/fragment_split.hpp"
+#include "kvd/tree/kvd_tree.hpp"
+
+namespace kvd::kinetic {
+
+// The sites that a failing certificate's features move.
+template <class Poly>
+std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing);
+
+struct Update_cost {
+  std::size_t sites = 0;          // moving sites
+  std::size_t nodes_touched = 0;  // nodes dragged, merged, split, created or descended through
+};
+
+template <class K>
+Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split,
+                         const std::set<symbolic::Symbolic_plane>& moving);
+
+}  // namespace kvd::kinetic

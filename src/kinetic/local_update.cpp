@@ -1,0 +1,105 @@
+#include "kvd/kinetic/local_update.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "kvd/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/tree/operations.hpp"
+
+namespace kvd::kinetic {
+
+namespace {
+
+using SP = symbolic::Symbolic_plane;
+using SV = symbolic::Symbolic_vertex;
+using Sites = std::set<SP>;
+
+void edge_sites(const scene::Scene& s, std::size_t e, Sites& out) {
+  out.insert({SP::Kind::E, e});
+  for (std::size_t t : s.edge_triangles[e]) out.insert({SP::Kind::T, t});
+}
+
+void vertex_sites(const scene::Scene& s, std::size_t v, Sites& out) {
+  out.insert({SP::Kind::P, v});
+  for (std::size_t e : s.vertex_edges[v]) edge_sites(s, e, out);
+}
+
+// The sites through a symbolic vertex: those of every feature defining it.
+void sites_of(const scene::Scene& s, const SV& v, Sites& out) {
+  const auto& id = v.ids;
+  switch (v.kind) {
+    case SV::Kind::endpoint: vertex_sites(s, id[0], out); break;
+    case SV::Kind::intersection: edge_sites(s, id[0], out), edge_sites(s, id[1], out); break;
+    case SV::Kind::thread: edge_sites(s, id[0], out), vertex_sites(s, id[1], out); break;
+    case SV::Kind::internal_intersection:
+      edge_sites(s, id[0], out), edge_sites(s, id[1], out), out.insert({SP::Kind::T, id[2]});
+      break;
+    case SV::Kind::internal_thread:
+      vertex_sites(s, id[0], out), edge_sites(s, id[1], out), out.insert({SP::Kind::T, id[2]});
+      break;
+    case SV::Kind::axis: out.insert({SP::Kind::T, id[0]}); break;
+    case SV::Kind::plumb: vertex_sites(s, id[0], out), out.insert({SP::Kind::T, id[1]}); break;
+  }
+}
+
+void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
+  switch (p.kind) {
+    case SP::Kind::P: vertex_sites(s, p.id, out); break;
+    case SP::Kind::E: edge_sites(s, p.id, out); break;
+    case SP::Kind::T: out.insert(p); break;
+  }
+}
+
+}  // namespace
+
+template <class Poly>
+std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing) {
+  Sites out;
+  for (const SV& v : failing.vertices) sites_of(s, v, out);
+  for (const SP& p : failing.planes) sites_of(s, p, out);
+  return out;
+}
+
+template <class K>
+Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split, const std::set<SP>& moving) {
+  const scene::Scene& s = split.classifier().motion().scene();
+  // The nodes of moving sites, with where each hangs.
+  struct Held {
+    std::size_t priority;
+    int node, parent;
+    bool right;
+  };
+  std::vector<Held> held;
+  std::vector<std::tuple<int, int, bool>> stack;
+  if (t.root >= 0) stack.emplace_back(t.root, -1, false);
+  while (!stack.empty()) {
+    const auto [n, parent, right] = stack.back();
+    stack.pop_back();
+    const tree::Node& nd = t.nodes[static_cast<std::size_t>(n)];
+    if (moving.contains(nd.cut)) held.push_back({tree::cut_priority(s, nd.cut), n, parent, right});
+    if (nd.left >= 0) stack.emplace_back(nd.left, n, false);
+    if (nd.right >= 0) stack.emplace_back(nd.right, n, true);
+  }
+  // Lowest priority first: a node's parent is never dragged before it.
+  std::sort(held.begin(), held.end(), [](const Held& a, const Held& b) { return a.priority > b.priority; });
+  tree::Tree_editor<K> editor(t, split);
+  for (const Held& h : held) {
+    const int replacement = editor.drag(h.node);
+    if (h.parent < 0) t.root = replacement;
+    else if (h.right) t.nodes[static_cast<std::size_t>(h.parent)].right = replacement;
+    else t.nodes[static_cast<std::size_t>(h.parent)].left = replacement;
+  }
+  std::vector<SP> order(moving.begin(), moving.end());
+  std::sort(order.begin(), order.end(),
+            [&](const SP& a, const SP& b) { return tree::cut_priority(s, a) < tree::cut_priority(s, b); });
+  for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
+  return {moving.size(), editor.touched()};
+}
+
+#define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \
+  template std::set<SP> moving_sites<K::Poly>(const scene::Scene&, const Certificate<K::Poly>&);            \
+  template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Fragment_splitter<K>&, const std::set<SP>&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_LOCAL_UPDATE)
+
+}  // namespace kvd::kinetic
