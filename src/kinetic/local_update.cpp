@@ -45,7 +45,7 @@ void sites_of(const scene::Scene& s, const SV& v, Sites& out) {
 
 void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
   switch (p.kind) {
-    case SP::Kind::P: vertex_sites(s, p.id, out); break;
+    case SP::Kind::P: out.insert(p); break;
     case SP::Kind::E: edge_sites(s, p.id, out); break;
     case SP::Kind::T: out.insert(p); break;
   }

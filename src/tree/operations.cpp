@@ -58,15 +58,38 @@ std::size_t Tree_editor<K>::priority(int n) const {
 
 template <class K>
 int Tree_editor<K>::make(Node n) {
-  ++touched_;
+  int i;
   if (t_.free_nodes.empty()) {
     t_.nodes.push_back(std::move(n));
-    return static_cast<int>(t_.nodes.size()) - 1;
+    i = static_cast<int>(t_.nodes.size()) - 1;
+  } else {
+    i = t_.free_nodes.back();
+    t_.free_nodes.pop_back();
+    node(i) = std::move(n);
   }
-  const int i = t_.free_nodes.back();
-  t_.free_nodes.pop_back();
-  node(i) = std::move(n);
+  touched_.push_back(i);
   return i;
+}
+
+template <class K>
+void Tree_editor<K>::relink(int n, int left, int right) {
+  if (node(n).left == left && node(n).right == right) return;
+  node(n).left = left, node(n).right = right;
+  touched_.push_back(n);
+}
+
+template <class K>
+void Tree_editor<K>::release(int n) {
+  node(n).left = node(n).right = -1;
+  t_.free_nodes.push_back(n);
+  touched_.push_back(n);
+}
+
+template <class K>
+std::size_t Tree_editor<K>::touched() const {
+  std::vector<int> t = touched_;
+  std::sort(t.begin(), t.end());
+  return static_cast<std::size_t>(std::unique(t.begin(), t.end()) - t.begin());
 }
 
 // A node is split when its piece crosses the plane; otherwise it stays on
@@ -75,21 +98,21 @@ int Tree_editor<K>::make(Node n) {
 template <class K>
 std::pair<int, int> Tree_editor<K>::split_tree(int t, const SP& plane) {
   if (t < 0) return {-1, -1};
-  ++touched_;
   const SP cut = node(t).cut;
   auto [neg, pos] = split_.split(node(t).fragment, plane, cut);
   const auto [ln, lp] = split_tree(node(t).left, plane);
   const auto [rn, rp] = split_tree(node(t).right, plane);
   if (neg && pos) {
     node(t).fragment = std::move(*neg);
-    node(t).left = ln, node(t).right = rn;
+    touched_.push_back(t);
+    relink(t, ln, rn);
     return {t, make(Node{cut, std::move(*pos), lp, rp})};
   }
   if (neg) {
-    node(t).left = ln, node(t).right = rn;
+    relink(t, ln, rn);
     return {t, merge(lp, rp, cut)};
   }
-  node(t).left = lp, node(t).right = rp;
+  relink(t, lp, rp);
   return {merge(ln, rn, cut), t};
 }
 
@@ -97,39 +120,32 @@ template <class K>
 int Tree_editor<K>::merge(int t1, int t2, const SP& between) {
   if (t1 < 0) return t2;
   if (t2 < 0) return t1;
-  ++touched_;
   if (priority(t1) == priority(t2)) {  // one site, its two pieces meeting across `between`
     node(t1).fragment = join(node(t1).fragment, node(t2).fragment, between, node(t1).cut);
+    touched_.push_back(t1);
     const int l2 = node(t2).left, r2 = node(t2).right;
-    node(t2).left = node(t2).right = -1;
-    t_.free_nodes.push_back(t2);
+    release(t2);
     const int l = merge(node(t1).left, l2, between);
     const int r = merge(node(t1).right, r2, between);
-    node(t1).left = l, node(t1).right = r;
+    relink(t1, l, r);
     return t1;
   }
   if (priority(t2) < priority(t1)) std::swap(t1, t2);
   const auto [neg, pos] = split_tree(t2, node(t1).cut);
   const int l = merge(node(t1).left, neg, between);
   const int r = merge(node(t1).right, pos, between);
-  node(t1).left = l, node(t1).right = r;
+  relink(t1, l, r);
   return t1;
 }
 
 template <class K>
 int Tree_editor<K>::insert(int t, const SP& cut, Fragment f) {
   if (t < 0) return make(Node{cut, std::move(f)});
-  ++touched_;
   if (priority(t) < cut_priority(s_, cut)) {
     auto [neg, pos] = split_.split(f, node(t).cut, cut);
-    if (neg) {
-      const int l = insert(node(t).left, cut, std::move(*neg));
-      node(t).left = l;
-    }
-    if (pos) {
-      const int r = insert(node(t).right, cut, std::move(*pos));
-      node(t).right = r;
-    }
+    const int l = neg ? insert(node(t).left, cut, std::move(*neg)) : node(t).left;
+    const int r = pos ? insert(node(t).right, cut, std::move(*pos)) : node(t).right;
+    relink(t, l, r);
     return t;
   }
   const auto [l, r] = split_tree(t, cut);
@@ -138,11 +154,9 @@ int Tree_editor<K>::insert(int t, const SP& cut, Fragment f) {
 
 template <class K>
 int Tree_editor<K>::drag(int n) {
-  ++touched_;
   const int l = node(n).left, r = node(n).right;
   const SP cut = node(n).cut;
-  node(n).left = node(n).right = -1;
-  t_.free_nodes.push_back(n);
+  release(n);
   return merge(l, r, cut);
 }
 

@@ -13,8 +13,9 @@
 //  * drag: a node taken out of the tree, its subtrees merged (thesis
 //    Fig. 7.5; its MERGE effects are drags of incident nodes, its SPLIT
 //    effects their reinsertion, see kinetic/local_update.hpp).
-// Removed nodes are recycled; `touched` counts the nodes each operation
-// created, relinked, re-cut or removed.
+// Removed nodes are recycled. `touched` counts the distinct nodes the
+// operations created, re-cut (a new fragment), relinked (new children) or
+// removed; nodes only descended through are not counted.
 #pragma once
 
 #include <cstddef>
@@ -49,18 +50,20 @@ public:
   // Subtree n without node n.
   int drag(int n);
 
-  std::size_t touched() const { return touched_; }
+  std::size_t touched() const;
 
 private:
   Node& node(int i) { return t_.nodes[static_cast<std::size_t>(i)]; }
   std::size_t priority(int n) const;
   int make(Node n);
+  void relink(int n, int left, int right);
+  void release(int n);
   Fragment join(const Fragment& a, const Fragment& b, const Symbolic_plane& between, const Symbolic_plane& cut) const;
 
   Kvd_tree& t_;
   const Fragment_splitter<K>& split_;
   const scene::Scene& s_;
-  std::size_t touched_ = 0;
+  std::vector<int> touched_;
 };
 
 }  // namespace kvd::tree
