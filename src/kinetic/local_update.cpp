@@ -53,6 +53,14 @@ void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
 
 }  // namespace
 
+std::set<SP> sites_with(const scene::Scene& s, const SP& site) {
+  Sites out;
+  if (site.kind == SP::Kind::P) vertex_sites(s, site.id, out);
+  else if (site.kind == SP::Kind::E) edge_sites(s, site.id, out);
+  else out.insert(site);
+  return out;
+}
+
 template <class Poly>
 std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing) {
   Sites out;

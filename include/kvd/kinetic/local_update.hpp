@@ -30,6 +30,12 @@
 
 namespace kvd::kinetic {
 
+// A site with the sites whose cuts it bounds: a vertex's P-cut with the
+// E- and T-cuts of its edges and triangles, an edge's E-cut with the T-cuts
+// of its triangles. A T-cut is only valid inside its edges' walls, so an
+// edge never moves without its triangles.
+std::set<symbolic::Symbolic_plane> sites_with(const scene::Scene& s, const symbolic::Symbolic_plane& site);
+
 // The sites that a failing certificate's features move.
 template <class Poly>
 std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing);
