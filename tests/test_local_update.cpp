@@ -157,7 +157,7 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
 )");
 }
 
-TEST_CASE("--update local and --update rebuild give the same simulation", "[local][kinetic]") {
+TEST_CASE("local and rebuild updates give the same simulation", "[local][kinetic]") {
   // Random, generated and degenerate scenes (coplanar boxes moving along one
   // axis, lockstep motions, a shared y, a vertical edge, z on a plane): the
   // same batches at the same exact times with the same failures and the

@@ -51,8 +51,6 @@ class Simulator {
 public:
   Simulator(const K& k, const scene::Scene& s, const Options& o, Observer<K>* observer)
       : k_(k), c_(k, s), oracle_(k, s), o_(o), observer_(observer), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
-    if (o.update == Update::local && o.certificates == Certificate_set::full)
-      throw std::invalid_argument("the full certificate set is what a build evaluates: use it with --update rebuild");
     sim_.limit = o.until;
     if (s.end && (!sim_.limit || *s.end < *sim_.limit)) sim_.limit = *s.end;
     if (sim_.limit) limit_ = k.time(from_rational<FT>(*sim_.limit));
@@ -97,7 +95,7 @@ public:
       std::sort(batch.failing.begin(), batch.failing.end());
       const auto tree_start = std::chrono::steady_clock::now();
       Time at = *next;
-      std::optional<tree::Kvd_tree> after = o_.update == Update::local ? update_locally(at, batch) : build_at(at);
+      std::optional<tree::Kvd_tree> after = local() ? update_locally(at, batch) : build_at(at);
       if (!after) {
         sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + build_error_ + colliding(batch);
         sim_.stopped = Stop::collision;
@@ -133,6 +131,8 @@ private:
   static constexpr bool floating = !std::is_same_v<K, Exact_kernel>;
 
   bool full() const { return o_.certificates == Certificate_set::full; }
+  // The full set is what a build evaluates: it always takes the rebuild.
+  bool local() const { return o_.update == Update::local && !full(); }
 
   std::optional<tree::Kvd_tree> try_build(const Time& t) {
     evaluated_.clear();
@@ -147,7 +147,7 @@ private:
   // The tree in force changed by the local update of the batch failing at
   // `at`; none when triangles meet there (the tree in force then stays).
   // A floating-point kernel whose update throws repairs with the recovery's
-  // builds.
+  // builds (counted as a failed build).
   std::optional<tree::Kvd_tree> update_locally(Time& at, Batch<Time>& batch) {
     std::set<symbolic::Symbolic_plane> moving;
     for (std::size_t id : queue_->first()) moving.merge(moving_sites(c_.motion().scene(), certs_[id]));
@@ -159,9 +159,13 @@ private:
       return t;
     } catch (const tree::Build_error& e) {
       build_error_ = e.what();
+      if constexpr (!floating) return std::nullopt;
+    } catch (const std::logic_error&) {
+      // Rounding can leave pieces that no longer fit together (a join that
+      // finds no shared side); exact arithmetic cannot, so there it is a bug.
+      if constexpr (!floating) throw;
     }
-    if constexpr (floating) return build_at(at);
-    return std::nullopt;
+    return build_at(at);
   }
 
   // The tree valid just after `at`; none when triangles meet there. A

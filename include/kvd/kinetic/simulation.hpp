@@ -114,7 +114,7 @@ struct Options {
   Validation validate = Validation::every;  // between every two batches, or only the last
   Certificate_set certificates = Certificate_set::reduced;
   Queue_kind queue = Queue_kind::tree;
-  Update update = Update::local;
+  Update update = Update::local;  // the full set always rebuilds
   // Called after every batch with the number of batches and of failures so far.
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };
