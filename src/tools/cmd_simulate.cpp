@@ -49,11 +49,12 @@ const char* const simulate_help =
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
-    "           \"nodes_touched\": N}, ...], \"update\": U, \"nodes_touched\": {\"median\", \"below_10_share\"},\n"
+    "           \"nodes_touched\": N}, ...], \"update\": U, \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
-    "           \"construction_ms\": X, \"update_ms\": {\"average\", \"max\", \"stddev\"},\n"
+    "           \"construction_ms\": X, \"update_ms\": {\"average\", \"max\", \"stddev\",\n"
+    "           \"median\", \"tree_median\"},\n"
     "           \"recovery\": {\"failed_builds\", \"refires\", \"stale_trees\", \"rebuilds\", \"unrepaired\"},\n"
     "           \"tree_update_share\": X, \"certificate_update_share\": X}\n"
     "\n"
@@ -122,8 +123,11 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                 << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false")
                 << ", \"nodes_touched\": " << e.nodes_touched << "}";
     }
-    std::cout << "], \"update\": " << json_string(update) << ", \"nodes_touched\": {\"median\": " << fixed(touched.median, 1)
-              << ", \"below_10_share\": " << fixed(touched.below_10_share, 3) << "}, \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
+    std::cout << "], \"update\": " << json_string(update) << ", \"nodes_touched\": "
+              << (o.update == kinetic::Update::local ? "{\"median\": " + fixed(touched.median, 1) + ", \"below_10_share\": " +
+                                                           fixed(touched.below_10_share, 3) + "}"
+                                                     : std::string("null"))
+              << ", \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
               << ", \"simultaneous_batches\": " << sim.simultaneous_batches
               << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
               << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
@@ -133,6 +137,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << ", \"events_by_type\": " << by_type_json(sim.failures_by_type)
               << ", \"construction_ms\": " << fixed(1000 * sim.construction_seconds, 3) << ", \"update_ms\": {\"average\": "
               << fixed(u.average, 3) << ", \"max\": " << fixed(u.max, 3) << ", \"stddev\": " << fixed(u.stddev, 3)
+              << ", \"median\": " << fixed(u.median, 3) << ", \"tree_median\": " << fixed(u.tree_median, 3)
               << "}, \"recovery\": " << recovery_json(sim.recovery)
               << ", \"tree_update_share\": " << fixed(u.tree_share, 3)
               << ", \"certificate_update_share\": " << fixed(u.certificate_share, 3) << "}\n";
@@ -154,7 +159,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << "events:        " << by_type_text(sim.failures_by_type) << "\n"
               << "construction:  " << fixed(1000 * sim.construction_seconds, 3) << " ms\n"
               << "update (ms):   average " << fixed(u.average, 3) << ", max " << fixed(u.max, 3) << ", stddev "
-              << fixed(u.stddev, 3) << "\n"
+              << fixed(u.stddev, 3) << ", median " << fixed(u.median, 3) << " (tree " << fixed(u.tree_median, 3) << ")\n"
               << (o.update == kinetic::Update::local
                       ? "nodes touched: median " + fixed(touched.median, 1) + " per batch, " +
                             fixed(100 * touched.below_10_share, 1) + "% of batches below 10\n"

@@ -22,19 +22,26 @@ std::string fixed(double x, int digits);
 std::string scientific(const mpq_class& q);
 double log10_of(const mpq_class& q);
 
+// The median of v; 0 for none.
+double median(std::vector<double> v);
+
 // The update-cost statistics of the thesis's Figures 8.6 and 8.7, in ms
 // per batch (all zero without batches).
 struct Update_costs {
   double total = 0, average = 0, max = 0, stddev = 0, certificate_average = 0, tree_share = 0,
          certificate_share = 0;
+  double median = 0, tree_median = 0;  // of the whole update, and of its tree part
 };
 template <class Time>
 Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
   Update_costs u;
   if (sim.batches.empty()) return u;
   double squares = 0, tree = 0, certificate = 0;
+  std::vector<double> all, trees;
   for (const auto& b : sim.batches) {
     const double ms = 1000 * (b.tree_seconds + b.certificate_seconds);
+    all.push_back(ms);
+    trees.push_back(1000 * b.tree_seconds);
     u.total += ms;
     squares += ms * ms;
     tree += 1000 * b.tree_seconds;
@@ -47,11 +54,10 @@ Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
   u.certificate_average = certificate / n;
   u.tree_share = u.total > 0 ? tree / u.total : 0;
   u.certificate_share = u.total > 0 ? certificate / u.total : 0;
+  u.median = median(std::move(all));
+  u.tree_median = median(std::move(trees));
   return u;
 }
-
-// The median of v; 0 for none.
-double median(std::vector<double> v);
 
 // Nodes touched per batch by the local update (thesis 7.3).
 struct Touched {
