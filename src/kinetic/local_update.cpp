@@ -43,6 +43,9 @@ void sites_of(const scene::Scene& s, const SV& v, Sites& out) {
   }
 }
 
+// The sites through a certificate's plane: its own site, and for an E-plane
+// the edge's triangles too, whose T-cuts are valid only inside its wall
+// (proofs/local_update.md, section 4).
 void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
   switch (p.kind) {
     case SP::Kind::P: out.insert(p); break;
@@ -99,8 +102,7 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& sp
     else t.nodes[static_cast<std::size_t>(h.parent)].left = replacement;
   }
   std::vector<SP> order(moving.begin(), moving.end());
-  std::sort(order.begin(), order.end(),
-            [&](const SP& a, const SP& b) { return tree::cut_priority(s, a) < tree::cut_priority(s, b); });
+  tree::sort_by_priority(s, order);
   for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
   return {moving.size(), editor.touched()};
 }

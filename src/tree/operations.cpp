@@ -38,12 +38,16 @@ Fragment site_fragment(const scene::Scene& s, const SP& cut) {
   return f;
 }
 
+void sort_by_priority(const scene::Scene& s, std::vector<SP>& sites) {
+  std::sort(sites.begin(), sites.end(), [&](const SP& a, const SP& b) { return cut_priority(s, a) < cut_priority(s, b); });
+}
+
 std::vector<SP> sites_in_priority_order(const scene::Scene& s) {
   std::vector<SP> out;
   for (std::size_t v = 0; v < s.rest.size(); ++v) out.push_back({SP::Kind::P, v});
   for (std::size_t e = 0; e < s.edges.size(); ++e) out.push_back({SP::Kind::E, e});
   for (std::size_t t = 0; t < s.triangles.size(); ++t) out.push_back({SP::Kind::T, t});
-  std::sort(out.begin(), out.end(), [&](const SP& a, const SP& b) { return cut_priority(s, a) < cut_priority(s, b); });
+  sort_by_priority(s, out);
   return out;
 }
 

@@ -42,7 +42,7 @@ std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const Cer
 
 struct Update_cost {
   std::size_t sites = 0;          // moving sites
-  std::size_t nodes_touched = 0;  // nodes dragged, merged, split, created or descended through
+  std::size_t nodes_touched = 0;  // distinct nodes re-cut, relinked, created or removed (Tree_editor::touched)
 };
 
 template <class K>

@@ -28,7 +28,6 @@ public:
   std::pair<Piece, Piece> split(const Fragment& f, const Symbolic_plane& plane, const Symbolic_plane& cut) const;
 
   const predicates::Classifier<K>& classifier() const { return c_; }
-  const typename K::Time& instant() const { return t_; }
 
 private:
   int side(const Symbolic_vertex& v, const Symbolic_plane& p) const;

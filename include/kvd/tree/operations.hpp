@@ -32,6 +32,8 @@ namespace kvd::tree {
 std::size_t cut_priority(const scene::Scene& s, const Symbolic_plane& cut);
 // A site's whole fragment: the vertex, the whole edge, the whole triangle.
 Fragment site_fragment(const scene::Scene& s, const Symbolic_plane& cut);
+// `sites` in construction order.
+void sort_by_priority(const scene::Scene& s, std::vector<Symbolic_plane>& sites);
 // Every site of the scene, in construction order.
 std::vector<Symbolic_plane> sites_in_priority_order(const scene::Scene& s);
 
