@@ -135,13 +135,17 @@ TEST_CASE("a moving Euclidean decomposition point", "[kinetic]") {
   CHECK(sim.batches.size() >= 2);  // static triangles, yet the moving z makes events
 }
 
-TEST_CASE("a collision stops the simulation at its exact time", "[kinetic]") {
+TEST_CASE("with --collisions stop a collision stops the simulation at its exact time", "[kinetic]") {
   // The mover's lowest vertex (0, 0, 1) falls at speed 1 onto the floor z = 0.
-  const auto set = GENERATE(reduced, full);
-  const auto sim = run_text(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 5}, "objects": [
+  auto o = with(GENERATE(reduced, full));
+  o.collisions = kinetic::Collisions::stop;
+  const auto sim = kinetic::simulate(k, scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 5}, "objects": [
     {"vertices": [[-4,-4,0],[4,-4,0],[0,4,0]], "triangles": [[0,1,2]]},
-    {"vertices": [[0,0,1],[1,0,2],[0,1,3]], "triangles": [[0,1,2]], "motion": {"translation": [0,0,[0,-1]]}}]})", set);
+    {"vertices": [[0,0,1],[1,0,2],[0,1,3]], "triangles": [[0,1,2]], "motion": {"translation": [0,0,[0,-1]]}}]})",
+                                                         "inline.json"), o);
   REQUIRE(sim.collision);
+  CHECK(sim.stopped == kinetic::Stop::collision);
+  CHECK(sim.motion_changes.empty());
   CHECK(k.compare(sim.time_reached, Exact_time(mpq_class(1))) == 0);
   CHECK(sim.collision->find("collision at t = 1") == 0);
 }

@@ -10,6 +10,7 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/kinetic/collision.hpp"
 #include "kvd/kinetic/local_update.hpp"
 #include "kvd/predicates/classify.hpp"
 #include "kvd/tree/build.hpp"
@@ -50,10 +51,11 @@ class Simulator {
 
 public:
   Simulator(const K& k, const scene::Scene& s, const Options& o, Observer<K>* observer)
-      : k_(k), c_(k, s), oracle_(k, s), o_(o), observer_(observer), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
+      : k_(k), scene_(s), o_(o), observer_(observer), queue_(make_queue(k, o.queue)), now_(k.time(from_rational<FT>(s.start))) {
     sim_.limit = o.until;
     if (s.end && (!sim_.limit || *s.end < *sim_.limit)) sim_.limit = *s.end;
     if (sim_.limit) limit_ = k.time(from_rational<FT>(*sim_.limit));
+    make_classifiers();
   }
 
   Simulation<Time> run() {
@@ -68,7 +70,7 @@ public:
     for (const auto& cert : certs_) ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)];
     std::optional<std::pair<Time, tree::Kvd_tree>> before_last;  // for Validation::end
     for (;;) {
-      if (sim_.failures >= o_.max_events) {
+      if (sim_.failures >= o_.max_events || sim_.motion_changes.size() >= o_.max_events) {
         sim_.stopped = Stop::events;
         break;
       }
@@ -96,6 +98,10 @@ public:
       const auto tree_start = std::chrono::steady_clock::now();
       Time at = *next;
       std::optional<tree::Kvd_tree> after = local() ? update_locally(at, batch) : build_at(at);
+      if (!after && respond(*next)) {
+        if (o_.validate == Validation::end) before_last.reset();  // the tree in force now has new motions
+        continue;
+      }
       if (!after) {
         sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + build_error_ + colliding(batch);
         sim_.stopped = Stop::collision;
@@ -121,7 +127,7 @@ public:
       sim_.batches.push_back(std::move(batch));
       if (o_.progress) o_.progress(sim_.batches.size(), sim_.failures);
     }
-    if (o_.validate == Validation::end && before_last) validate(before_last->first, now_, before_last->second);
+    if (o_.validate == Validation::end && before_last && k_.compare(before_last->first, now_) < 0) validate(before_last->first, now_, before_last->second);
     sim_.time_reached = now_;
     sim_.structure_hash = tree::structure_hash(current_);
     return std::move(sim_);
@@ -137,9 +143,10 @@ private:
   std::optional<tree::Kvd_tree> try_build(const Time& t) {
     evaluated_.clear();
     try {
-      return tree::build(c_, t, full() ? &evaluated_ : nullptr);
+      return tree::build(*c_, t, full() ? &evaluated_ : nullptr);
     } catch (const tree::Build_error& e) {
       build_error_ = e.what();
+      contact_ = e.contact;
       return std::nullopt;
     }
   }
@@ -150,15 +157,16 @@ private:
   // builds (counted as a failed build).
   std::optional<tree::Kvd_tree> update_locally(Time& at, Batch<Time>& batch) {
     std::set<symbolic::Symbolic_plane> moving;
-    for (std::size_t id : queue_->first()) moving.merge(moving_sites(c_.motion().scene(), certs_[id]));
+    for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, certs_[id]));
     tree::Kvd_tree t = current_;
     try {
-      const Update_cost cost = local_update(t, tree::Fragment_splitter<K>(c_, at), moving);
+      const Update_cost cost = local_update(t, tree::Fragment_splitter<K>(*c_, at), moving);
       batch.moving_sites = cost.sites;
       batch.nodes_touched = cost.nodes_touched;
       return t;
     } catch (const tree::Build_error& e) {
       build_error_ = e.what();
+      contact_ = e.contact;
       if constexpr (!floating) return std::nullopt;
     } catch (const std::logic_error&) {
       // Rounding can leave pieces that no longer fit together (a join that
@@ -177,9 +185,11 @@ private:
       if (t) return t;
       ++sim_.recovery.failed_builds;
       const std::string error = build_error_;  // the steps' own failures are not the news
+      const std::optional<tree::Contact> contact = contact_;
       auto later = step_forward(at, [](const tree::Kvd_tree&) { return true; });
       if (!later) {
         build_error_ = error;
+        contact_ = contact;
         return std::nullopt;
       }
       ++sim_.recovery.rebuilds;
@@ -207,7 +217,7 @@ private:
 
   // The certificates of the tree in force, their failure times, the queue.
   void make_certificates() {
-    certs_ = full() ? full_certificates(c_, current_, evaluated_, now_) : reduced_certificates(c_, current_, now_);
+    certs_ = full() ? full_certificates(*c_, current_, evaluated_, now_) : reduced_certificates(*c_, current_, now_);
     queue_->reset(current_);
     for (std::size_t i = 0; i < certs_.size(); ++i) {
       std::optional<Time> first;
@@ -266,7 +276,7 @@ private:
     std::optional<std::string> diff;
     std::optional<tree::Kvd_tree> fresh;
     try {
-      fresh = tree::build(oracle_, mid);
+      fresh = tree::build(*oracle_, mid);
       diff = tree::first_difference(in_force, *fresh);
       if (diff) diff = "the tree in force differs from a fresh build: " + *diff;
     } catch (const tree::Build_error& e) {
@@ -280,6 +290,82 @@ private:
     return std::pair{std::move(mid), std::move(*fresh)};
   }
 
+  // Classifiers of the motions in force (their caches hold motion polynomials).
+  void make_classifiers() {
+    c_ = std::make_unique<const predicates::Classifier<K>>(k_, scene_);
+    oracle_ = std::make_unique<const predicates::Classifier<K>>(k_, scene_);
+  }
+
+  // X-collide for triangles found meeting at `collision`: reverses the
+  // objects' motions at a time r strictly between the last batch and
+  // `collision`, where the tree in force is valid, and puts the certificates
+  // of the new motions in force from r. A second contact at the same
+  // instant before any batch reverses its other objects at the same r.
+  // False when the run stops instead: Collisions::stop, an unknown contact,
+  // or a contact of objects already reversed for this instant.
+  bool respond(const Time& collision) {
+    if (o_.collisions != Collisions::reverse || !contact_) return false;
+    std::vector<std::size_t> objects = contact_objects(scene_, *contact_);
+    std::erase_if(objects, [&](std::size_t o) { return !scene_.is_moving(o); });  // reversing changes nothing
+    const bool again = !sim_.motion_changes.empty() && sim_.motion_changes.back().batches_before == sim_.batches.size() &&
+                       k_.compare(sim_.motion_changes.back().collision, collision) == 0;
+    if (again)
+      std::erase_if(objects, [&](std::size_t o) {
+        return std::ranges::binary_search(sim_.motion_changes.back().objects, o);
+      });
+    if (objects.empty()) return false;
+    std::optional<mpq_class> r;
+    if (again) r = sim_.motion_changes.back().time;
+    else r = reversal_time(collision);
+    if (!r) return false;
+    Motion_change<Time> change{*r, collision, {}, {}, sim_.batches.size(), build_error_};
+    for (std::size_t o : objects) {
+      scene_.objects[o].motion = scene::reversed(scene_.objects[o].motion, *r);
+      change.objects.push_back(o);
+      change.motions.push_back(scene_.objects[o].motion);
+    }
+    if (again) {
+      Motion_change<Time>& last = sim_.motion_changes.back();
+      for (std::size_t i = 0; i < change.objects.size(); ++i) {
+        const auto at = std::ranges::upper_bound(last.objects, change.objects[i]) - last.objects.begin();
+        last.objects.insert(last.objects.begin() + at, change.objects[i]);
+        last.motions.insert(last.motions.begin() + at, change.motions[i]);
+      }
+      last.contact += "; " + change.contact;
+    } else {
+      sim_.motion_changes.push_back(change);
+    }
+    make_classifiers();
+    now_ = k_.time(from_rational<FT>(*r));
+    if (observer_) observer_->motion_change(change);
+    make_certificates();
+    return true;
+  }
+
+  // The reversal time: kinetic::reversal_time, moved past any root of a
+  // certificate in force (so that the tree in force is valid at r with the
+  // old motions and, positions being continuous, with the new ones); none
+  // when a floating-point run cannot separate the collision from now.
+  std::optional<mpq_class> reversal_time(const Time& collision) {
+    Exact_time a = exact(now_);
+    const Exact_time c = exact(collision);
+    if constexpr (floating)
+      if (a.upper() >= c.lower()) return std::nullopt;
+    for (;;) {
+      const mpq_class r = kinetic::reversal_time(a, c);
+      const Time at = k_.time(from_rational<FT>(r));
+      const bool root = std::ranges::any_of(certs_, [&](const auto& cert) {
+        return std::ranges::any_of(cert.polys, [&](const auto& q) { return k_.sign_at(q, at) == 0; });
+      });
+      if (!root) return r;
+      a = Exact_time(r);
+    }
+  }
+
+  static Exact_time exact(const Exact_time& t) { return t; }
+  template <class T>
+  static Exact_time exact(const T& t) { return Exact_time(to_rational(t)); }
+
   static std::string colliding(const Batch<Time>& b) {
     std::string out;
     for (const Failure& f : b.failing)
@@ -288,8 +374,9 @@ private:
   }
 
   const K& k_;
-  const predicates::Classifier<K> c_;
-  const predicates::Classifier<K> oracle_;  // for validation only
+  scene::Scene scene_;  // with the motions in force
+  std::unique_ptr<const predicates::Classifier<K>> c_;
+  std::unique_ptr<const predicates::Classifier<K>> oracle_;  // for validation only
   const Options& o_;
   Observer<K>* observer_;
   std::unique_ptr<Event_queue<K>> queue_;
@@ -300,6 +387,7 @@ private:
   std::vector<Certificate<typename K::Poly>> certs_;
   std::map<std::vector<FT>, std::optional<Time>> roots_;
   std::string build_error_;  // why the last build threw
+  std::optional<tree::Contact> contact_;  // and which triangles it found meeting
   Simulation<Time> sim_;
 };
 

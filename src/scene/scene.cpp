@@ -17,23 +17,39 @@ QPoly shifted(const QPoly& p, const Q& shift) {
   return r;
 }
 
+namespace {
+// Every polynomial of a motion replaced by f(polynomial).
+template <class F>
+void map_polynomials(Motion& m, F f) {
+  for (auto& c : m.translation) c = f(c);
+  for (auto& row : m.matrix)
+    for (auto& c : row) c = f(c);
+  for (auto& v : m.vertices)
+    for (auto& c : v.c) c = f(c);
+}
+}  // namespace
+
 Scene retimed(const Scene& s, const Q& shift) {
   Scene r = s;
-  auto move = [&](Motion_point& p) {
-    for (auto& c : p.c) c = shifted(c, shift);
-  };
+  const auto shift_by = [&](const QPoly& p) { return shifted(p, shift); };
   r.start = s.start - shift;
   if (s.end) r.end = *s.end - shift;
-  move(r.x);
-  move(r.z);
-  for (auto& o : r.objects) {
-    for (auto& c : o.motion.translation) c = shifted(c, shift);
-    for (auto& row : o.motion.matrix)
-      for (auto& c : row) c = shifted(c, shift);
-    for (auto& v : o.motion.vertices) move(v);
-  }
+  for (auto& c : r.x.c) c = shifted(c, shift);
+  for (auto& c : r.z.c) c = shifted(c, shift);
+  for (auto& o : r.objects) map_polynomials(o.motion, shift_by);
   r.derive();
   return r;
+}
+
+Motion reversed(const Motion& m, const Q& r) {
+  // p(2r - t) = q(-t) for q(u) = p(u + 2r): q with its odd coefficients negated.
+  Motion out = m;
+  map_polynomials(out, [&](const QPoly& p) {
+    std::vector<Q> c = shifted(p, 2 * r).coefficients();
+    for (std::size_t i = 1; i < c.size(); i += 2) c[i] = -c[i];
+    return QPoly(std::move(c));
+  });
+  return out;
 }
 
 namespace {

@@ -199,39 +199,24 @@ std::string triangle_place(const Scene& s, std::size_t t) {
   return "/objects/" + std::to_string(o) + "/triangles/" + std::to_string(t - s.objects[o].first_triangle);
 }
 
-Vec3 euclidean(const QPoint& p) { return {p[0] / p[3], p[1] / p[3], p[2] / p[3]}; }
-
 void Reader::check_geometry(const Scene& s, const Load_options& options) const {
-  std::vector<Vec3> at_start(s.rest.size());
-  for (std::size_t v = 0; v < s.rest.size(); ++v) {
-    const QPoint p = s.position_at(v, s.start);
-    if (p[3] == 0) {
+  for (std::size_t v = 0; v < s.rest.size(); ++v)
+    if (s.position_at(v, s.start)[3] == 0) {
       const std::size_t o = s.vertex_object[v];
       fail("/objects/" + std::to_string(o) + "/vertices/" + std::to_string(v - s.objects[o].first_vertex),
            "this vertex's W is zero at the start time (it must stay a Euclidean point)");
     }
-    at_start[v] = euclidean(p);
-  }
-  std::vector<Triangle3> tri(s.triangles.size());
+  const std::vector<Triangle3> tri = triangles_at(s, s.start);
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    for (std::size_t k = 0; k < 3; ++k) tri[t][k] = at_start[s.triangles[t][k]];
     const Vec3 u{tri[t][1][0] - tri[t][0][0], tri[t][1][1] - tri[t][0][1], tri[t][1][2] - tri[t][0][2]};
     const Vec3 w{tri[t][2][0] - tri[t][0][0], tri[t][2][1] - tri[t][0][1], tri[t][2][2] - tri[t][0][2]};
     if (u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 && u[0] * w[1] - u[1] * w[0] == 0)
       fail(triangle_place(s, t), "the triangle's vertices are collinear at the start time");
   }
   if (options.allow_intersecting) return;
-  for_each_close_pair(tri, [&](std::size_t a, std::size_t b) {
-    std::vector<Vec3> shared;
-    if (s.triangle_object[a] == s.triangle_object[b])
-      for (std::size_t va : s.triangles[a])
-        for (std::size_t vb : s.triangles[b])
-          if (va == vb) shared.push_back(at_start[va]);
-    if (triangles_conflict(tri[a], tri[b], shared))
-      fail(triangle_place(s, a), "intersects the triangle at " + triangle_place(s, b) +
-                                     " at the start time (pass --allow-intersecting to accept this)");
-    return false;
-  });
+  if (const auto c = first_conflict(s, tri))
+    fail(triangle_place(s, c->first), "intersects the triangle at " + triangle_place(s, c->second) +
+                                          " at the start time (pass --allow-intersecting to accept this)");
 }
 
 Scene Reader::read(const Json_value& doc, const Load_options& options) const {

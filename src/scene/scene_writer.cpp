@@ -64,6 +64,8 @@ void print(const J& v, int indent, std::string& out) {
 
 }  // namespace
 
+std::string write_motion(const Motion& m) { return motion(m).dump(); }
+
 std::string write_scene(const Scene& s) {
   J doc;
   doc["format"] = "kvd-scene/1";

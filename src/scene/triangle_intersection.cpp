@@ -153,4 +153,31 @@ void for_each_close_pair(const std::vector<Triangle3>& tris,
   }
 }
 
+std::vector<Triangle3> triangles_at(const Scene& s, const Q& t) {
+  std::vector<Vec3> at(s.rest.size());
+  for (std::size_t v = 0; v < s.rest.size(); ++v) {
+    const QPoint p = s.position_at(v, t);
+    at[v] = {p[0] / p[3], p[1] / p[3], p[2] / p[3]};
+  }
+  std::vector<Triangle3> tri(s.triangles.size());
+  for (std::size_t i = 0; i < s.triangles.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) tri[i][k] = at[s.triangles[i][k]];
+  return tri;
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> first_conflict(const Scene& s, const std::vector<Triangle3>& tri) {
+  std::optional<std::pair<std::size_t, std::size_t>> found;
+  for_each_close_pair(tri, [&](std::size_t a, std::size_t b) {
+    // Triangles of one object may share vertices, and with them the edge between.
+    std::vector<Vec3> shared;
+    if (s.triangle_object[a] == s.triangle_object[b])
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j)
+          if (s.triangles[a][i] == s.triangles[b][j]) shared.push_back(tri[a][i]);
+    if (triangles_conflict(tri[a], tri[b], shared)) found = std::pair{a, b};
+    return found.has_value();
+  });
+  return found;
+}
+
 }  // namespace kvd::scene

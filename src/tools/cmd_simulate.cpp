@@ -9,6 +9,7 @@
 #include "report.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
+#include "kvd/scene/scene_io.hpp"
 
 namespace kvd::cli {
 
@@ -17,7 +18,8 @@ const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
     "                    [--kernel exact|double|mpfr:BITS] [--epsilon E]\n"
     "                    [--certificates reduced|full] [--queue tree|heap]\n"
-    "                    [--update local|rebuild] [--trace FILE] [--list] [--json]\n"
+    "                    [--update local|rebuild] [--collisions reverse|stop]\n"
+    "                    [--trace FILE] [--list] [--json]\n"
     "\n"
     "Runs the kinetic KVD from the scene's start, until the scene's end, the last event, the\n"
     "batch holding the N-th certificate failure (default 100), or the last batch\n"
@@ -25,13 +27,17 @@ const char* const simulate_help =
     "--validate every (the default), the tree in force between two batches is\n"
     "compared with a fresh build at a rational time strictly between them (a\n"
     "difference is a missed event: a failed check); with end, only before the\n"
-    "last batch. Triangles that meet (a collision) stop the simulation with a\n"
-    "message and status 0. Prints the statistics of the thesis's Figures\n"
+    "last batch. Prints the statistics of the thesis's Figures\n"
     "8.5-8.7; progress goes to stderr every 100 batches.\n"
     "\n"
     "  --update U        local (default): the thesis's local update (thesis 7.3),\n"
     "                    which moves only the sites of the failing certificates'\n"
     "                    features; rebuild: the reference, a build just after each batch\n"
+    "  --collisions C    reverse (default): triangles that meet reverse both\n"
+    "                    objects' motions at a rational time just before (thesis\n"
+    "                    7.3.3, X-collide) and the run goes on; --events N also\n"
+    "                    bounds the number of these motion changes; stop: the run\n"
+    "                    stops at the collision with a message and status 0\n"
     "  --certificates S  reduced (default): the thesis's set (thesis 6.4);\n"
     "                    full: every sign the construction evaluated (implies\n"
     "                    --update rebuild, the build being what evaluates them)\n"
@@ -45,11 +51,15 @@ const char* const simulate_help =
     "                    inconsistent (a build that throws, a batch repeating\n"
     "                    itself, a tree that validation finds stale) by rebuilding,\n"
     "                    and counts it under \"recovery\"\n"
-    "  --trace FILE      one JSON line per certificate failure (format in the README)\n"
+    "  --trace FILE      one JSON line per certificate failure and per motion change\n"
+    "                    (format in the README)\n"
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
-    "           \"nodes_touched\": N}, ...], \"update\": U, \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
+    "           \"nodes_touched\": N}, ...], \"motion_changes\": [{\"time\": EXACT, \"approx\",\n"
+    "           \"collision\": EXACT, \"collision_approx\", \"objects\": [ID, ...], \"motions\": [...],\n"
+    "           \"batches_before\": N, \"contact\": TEXT}, ...], \"update\": U,\n"
+    "           \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
@@ -69,11 +79,34 @@ std::pair<std::string, std::string> interval(const K& k, const typename K::Time&
   return {k.to_string(t), k.to_string(t)};
 }
 
-// JSON Lines, one per certificate failure, in batch order.
+// The fields of a motion change, in JSON, without braces.
+template <class K>
+std::string motion_change_fields(const K& k, const kinetic::Motion_change<typename K::Time>& c) {
+  std::string objects, motions;
+  for (std::size_t i = 0; i < c.objects.size(); ++i) {
+    objects += (i ? ", " : "") + std::to_string(c.objects[i]);
+    motions += (i ? ", " : "") + scene::write_motion(c.motions[i]);
+  }
+  return "\"time\": " + json_string(c.time.get_str()) + ", \"approx\": " + json_string(approx(c.time.get_d())) +
+         ", \"collision\": " + json_string(k.to_string(c.collision)) +
+         ", \"collision_approx\": " + json_string(approx(k.to_double(c.collision))) + ", \"objects\": [" + objects +
+         "], \"motions\": [" + motions + "], \"batches_before\": " + std::to_string(c.batches_before) +
+         ", \"contact\": " + json_string(c.contact);
+}
+
+// JSON Lines, one per certificate failure and one per motion change, in the
+// order of the run.
 template <class K>
 std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>& sim) {
   std::string out;
+  std::size_t change = 0;
+  const auto changes_before = [&](std::size_t b) {
+    for (; change < sim.motion_changes.size() && sim.motion_changes[change].batches_before <= b; ++change)
+      out += "{\"motion_change\": " + std::to_string(change) + ", " + motion_change_fields(k, sim.motion_changes[change]) +
+             "}\n";
+  };
   for (std::size_t b = 0; b < sim.batches.size(); ++b) {
+    changes_before(b);
     const auto& e = sim.batches[b];
     const auto [lo, hi] = interval(k, e.time);
     const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(k.to_string(e.time)) +
@@ -83,6 +116,7 @@ std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>&
       out += head + ", \"certificate\": " + json_string(kinetic::to_string(f.type)) +
              ", \"nodes\": " + json_string(f.nodes) + "}\n";
   }
+  changes_before(sim.batches.size());
   return out;
 }
 
@@ -113,6 +147,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const char* queue = o.queue == kinetic::Queue_kind::tree ? "tree" : "heap";
   const char* update = o.update == kinetic::Update::local ? "local" : "rebuild";
   const Touched touched = nodes_touched(sim);
+  const std::size_t collisions = sim.motion_changes.size() + (sim.collision ? 1 : 0);
   if (json) {
     std::cout << "{\"kernel\": " << json_string(K::name) << ", \"certificate_set\": " << json_string(set)
               << ", \"queue\": " << json_string(queue) << ", \"batch_list\": [";
@@ -123,13 +158,16 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                 << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false")
                 << ", \"nodes_touched\": " << e.nodes_touched << "}";
     }
+    std::cout << "], \"motion_changes\": [";
+    for (std::size_t i = 0; i < sim.motion_changes.size(); ++i)
+      std::cout << (i ? ", " : "") << "{" << motion_change_fields(k, sim.motion_changes[i]) << "}";
     std::cout << "], \"update\": " << json_string(update) << ", \"nodes_touched\": "
               << (o.update == kinetic::Update::local ? "{\"median\": " + fixed(touched.median, 1) + ", \"below_10_share\": " +
                                                            fixed(touched.below_10_share, 3) + "}"
                                                      : std::string("null"))
               << ", \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
               << ", \"simultaneous_batches\": " << sim.simultaneous_batches
-              << ", \"collisions\": " << (sim.collision ? 1 : 0) << ", \"validation_failures\": " << sim.validation_failures
+              << ", \"collisions\": " << collisions << ", \"validation_failures\": " << sim.validation_failures
               << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
               << ", \"time_reached_exact\": " << json_string(k.to_string(sim.time_reached))
               << ", \"structure_hash\": " << json_string(sim.structure_hash)
@@ -142,8 +180,20 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << ", \"tree_update_share\": " << fixed(u.tree_share, 3)
               << ", \"certificate_update_share\": " << fixed(u.certificate_share, 3) << "}\n";
   } else {
+    std::size_t change = 0;
+    const auto changes_before = [&](std::size_t b) {
+      for (; change < sim.motion_changes.size() && sim.motion_changes[change].batches_before <= b; ++change) {
+        const auto& c = sim.motion_changes[change];
+        std::string objects;
+        for (std::size_t o : c.objects) objects += (objects.empty() ? "" : ", ") + std::to_string(o);
+        std::cout << "motion change at t = " << approx(c.time.get_d()) << " (" << c.time.get_str() << "): objects "
+                  << objects << " reversed before meeting at t = " << approx(k.to_double(c.collision)) << "\n";
+      }
+    };
     if (list)
-      for (std::size_t i = 0; i < sim.batches.size(); ++i) {
+      for (std::size_t i = 0; i <= sim.batches.size(); ++i) {
+        changes_before(i);
+        if (i == sim.batches.size()) break;
         const auto& e = sim.batches[i];
         std::cout << "batch " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
                   << "): " << e.failures() << " of " << e.certificates << " certificates fail, tree "
@@ -154,6 +204,9 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << "events:        " << sim.failures << " certificate failures in " << sim.batches.size() << " batches ("
               << sim.simultaneous_batches << " simultaneous)\n"
               << "time reached:  " << approx(k.to_double(sim.time_reached)) << "\n"
+              << (sim.motion_changes.empty() ? std::string()
+                                             : "collisions:    " + std::to_string(sim.motion_changes.size()) +
+                                                   " answered by reversing motions (X-collide)\n")
               << "structure:     " << sim.structure_hash << "\n"
               << "certificates:  " << by_type_text(sim.initial_certificates) << " at the start\n"
               << "events:        " << by_type_text(sim.failures_by_type) << "\n"
@@ -213,6 +266,11 @@ int simulate(Args& args) {
       if (v == "local") update = kinetic::Update::local;
       else if (v == "rebuild") update = kinetic::Update::rebuild;
       else throw Usage_error("kvd simulate: --update expects local or rebuild");
+    } else if (a == "--collisions") {
+      const std::string& v = args.value(a);
+      if (v == "reverse") o.collisions = kinetic::Collisions::reverse;
+      else if (v == "stop") o.collisions = kinetic::Collisions::stop;
+      else throw Usage_error("kvd simulate: --collisions expects reverse or stop");
     } else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
     else if (!sa.take(args, a)) args.unknown(a);
   }

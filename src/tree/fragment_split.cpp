@@ -19,11 +19,9 @@ int Fragment_splitter<K>::side(const SV& v, const SP& p) const {
 }
 
 // The vertex where `edge` crosses `plane`.
+// Only P- and E-planes cross fragments (split() throws before a T-plane does).
 template <class K>
 SV Fragment_splitter<K>::crossing(const SE& edge, const SP& plane) const {
-  if (plane.kind == SP::Kind::T)
-    throw Build_error("a fragment crosses the plane of triangle " + std::to_string(plane.id) +
-                      ": the triangles intersect at the build instant");
   const bool p_cut = plane.kind == SP::Kind::P;
   SV v{};
   switch (edge.kind) {
@@ -37,6 +35,16 @@ SV Fragment_splitter<K>::crossing(const SE& edge, const SP& plane) const {
   return symbolic::canonical(c_.motion().scene(), v);
 }
 
+namespace {
+// A fragment of `cut` crossing a triangle's plane: the triangles meet.
+void check_not_triangle(const SP& plane, const SP& cut) {
+  if (plane.kind == SP::Kind::T)
+    throw Build_error("a fragment of " + symbolic::to_string(cut) + " crosses the plane of triangle " +
+                          std::to_string(plane.id) + ": the triangles intersect at the build instant",
+                      Contact{cut, plane.id});
+}
+}  // namespace
+
 template <class K>
 std::pair<Piece, Piece> Fragment_splitter<K>::split(const Fragment& f, const SP& plane, const SP& cut) const {
   if (const auto* v = std::get_if<SV>(&f)) {
@@ -49,6 +57,7 @@ std::pair<Piece, Piece> Fragment_splitter<K>::split(const Fragment& f, const SP&
     const int sa = side(e->a, plane), sb = side(e->b, plane);
     if (sa <= 0 && sb <= 0 && (sa < 0 || sb < 0)) return {f, std::nullopt};
     if (sa >= 0 && sb >= 0) return {std::nullopt, f};
+    check_not_triangle(plane, cut);
     const SV x = crossing(e->edge, plane);
     const Edge_fragment first{e->a, x, e->edge}, second{x, e->b, e->edge};
     return sa < 0 ? std::pair<Piece, Piece>{first, second} : std::pair<Piece, Piece>{second, first};
@@ -63,6 +72,7 @@ std::pair<Piece, Piece> Fragment_splitter<K>::split(const Fragment& f, const SP&
   }
   if (!any_pos) return {f, std::nullopt};
   if (!any_neg) return {std::nullopt, f};
+  check_not_triangle(plane, cut);
   // A triangle fragment travels with its own T-cut: cut.id is its triangle.
   const SE cut_line{plane.kind == SP::Kind::P ? SE::Kind::pt : SE::Kind::et, plane.id, cut.id};
   return {clip(t, s, -1, plane, cut_line), clip(t, s, +1, plane, cut_line)};

@@ -11,6 +11,15 @@
 // within their epsilon, so a batch is every failure within epsilon of the
 // minimum: the thesis's epsilon-minimum grouping, on purpose.
 //
+// Collisions: an update that finds triangles meeting (a fragment crossing a
+// triangle's plane) is a collision. The response (X-collide, thesis 7.3.3,
+// kinetic/collision.hpp) reverses both objects' motions at a rational time
+// strictly between the last batch and the collision; the tree in force stays
+// valid there, and the certificates of the new motions replace the old ones.
+// Objects meeting again at that same instant before any batch (another pair
+// landing at once) are reversed at the same time, in the same motion change.
+// With Collisions::stop the run stops at the collision instead.
+//
 // Validation: the tree in force between two consecutive batches must be the
 // tree built at a time strictly between them (a rational in the exact
 // kernel, the midpoint in the others); a difference means an event was
@@ -66,6 +75,19 @@ struct Batch {
   std::size_t failures() const { return failing.size(); }
 };
 
+// A collision response: the objects' motions reversed at `time`, strictly
+// between the last batch and `collision`, the instant at which they would
+// have met. The new motions are in force from `time` on.
+template <class Time>
+struct Motion_change {
+  mpq_class time;
+  Time collision;
+  std::vector<std::size_t> objects;    // increasing
+  std::vector<scene::Motion> motions;  // the new motion of each object
+  std::size_t batches_before = 0;      // the batches processed before it
+  std::string contact;                 // which features met, in words
+};
+
 using Type_counts = std::array<std::size_t, certificate_types>;
 
 // What a floating-point run detected and repaired; all zero in the exact kernel.
@@ -94,6 +116,7 @@ struct Simulation {
   Time time_reached{};
   std::string structure_hash;            // of the tree in force at the end
   std::optional<std::string> collision;  // triangles meeting: the simulation stops there
+  std::vector<Motion_change<Time>> motion_changes;  // the collision responses, in order
   Stop stopped = Stop::exhausted;
   std::optional<mpq_class> limit;  // the time limit in force: the earlier of the scene's end and `until`
   Recovery recovery;
@@ -103,6 +126,8 @@ struct Simulation {
 };
 
 enum class Validation { every, end, none };
+
+enum class Collisions { reverse, stop };
 
 // How a batch changes the tree: by the local update of thesis 7.3
 // (kinetic/local_update.hpp), or by the reference rebuild.
@@ -115,20 +140,23 @@ struct Options {
   Certificate_set certificates = Certificate_set::reduced;
   Queue_kind queue = Queue_kind::tree;
   Update update = Update::local;  // the full set always rebuilds
+  Collisions collisions = Collisions::reverse;  // max_events also bounds the motion changes
   // Called after every batch with the number of batches and of failures so far.
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };
 
 // Sees what a simulation relies on, in order: the certificates put in force
 // at the start, then for every batch the batch (before its update) and the
-// certificates in force after it. The batch at which triangles meet comes
-// with collision = true and is the last call.
+// certificates in force after it. A motion change comes before the
+// certificates of the new motions. A batch at which triangles meet and the
+// run stops comes with collision = true and is the last call.
 template <class K>
 class Observer {
 public:
   virtual ~Observer() = default;
   virtual void in_force(const typename K::Time& now, const std::vector<Certificate<typename K::Poly>>& certs) = 0;
   virtual void batch(const Batch<typename K::Time>& b, bool collision) = 0;
+  virtual void motion_change(const Motion_change<typename K::Time>&) {}
 };
 
 // Runs from the scene's start until its end or `until`, no events are left,
@@ -137,6 +165,16 @@ public:
 template <class K>
 Simulation<typename K::Time> simulate(const K& kernel, const scene::Scene& s, const Options& options,
                                       Observer<K>* observer = nullptr);
+
+// The scene with the motions in force at t: s with every change at a time
+// <= t applied in order.
+template <class Time>
+scene::Scene motions_at(scene::Scene s, const std::vector<Motion_change<Time>>& changes, const mpq_class& t) {
+  for (const auto& c : changes)
+    if (c.time <= t)
+      for (std::size_t i = 0; i < c.objects.size(); ++i) s.objects[c.objects[i]].motion = c.motions[i];
+  return s;
+}
 
 // A rational strictly between a < b.
 mpq_class rational_between(const Exact_time& a, const Exact_time& b);

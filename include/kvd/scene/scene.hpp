@@ -105,5 +105,9 @@ QPoly shifted(const QPoly& p, const Q& shift);
 // p(t) becomes p(t + shift), and the time span moves by -shift, so the scene
 // at t equals the original at t + shift.
 Scene retimed(const Scene& s, const Q& shift);
+// The motion reversed at r (X-collide, thesis 7.3.3): every polynomial p(t)
+// becomes p(2r - t), so the object is where it was at r and every velocity
+// changes sign there.
+Motion reversed(const Motion& m, const Q& r);
 
 }  // namespace kvd::scene

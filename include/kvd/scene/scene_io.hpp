@@ -31,5 +31,8 @@ Scene load_scene(const std::string& path, const Load_options& options = {});
 // The scene as a `kvd-scene/1` document; numbers are written as exact strings.
 // read_scene(write_scene(s)) == s.
 std::string write_scene(const Scene& s);
+// A motion as the value of an object's "motion" key, on one line ("null"
+// for none).
+std::string write_motion(const Motion& m);
 
 }  // namespace kvd::scene

@@ -6,7 +6,11 @@
 
 #include <array>
 #include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
+
+#include "kvd/scene/scene.hpp"
 
 namespace kvd::scene {
 
@@ -32,5 +36,14 @@ bool triangles_conflict(const Triangle3& a, const Triangle3& b, const std::vecto
 // number of close pairs instead of n^2.
 void for_each_close_pair(const std::vector<Triangle3>& triangles,
                          const std::function<bool(std::size_t, std::size_t)>& visit);
+
+// The scene's triangles at the instant t, in Euclidean coordinates; every
+// vertex's W must be non-zero at t.
+std::vector<Triangle3> triangles_at(const Scene& s, const Q& t);
+
+// The first pair (a, b), a < b, of the scene's triangles `tri` (as placed at
+// some instant) that meet outside the vertices and edges they share: the
+// scene format's intersection rule. None when no two meet.
+std::optional<std::pair<std::size_t, std::size_t>> first_conflict(const Scene& s, const std::vector<Triangle3>& tri);
 
 }  // namespace kvd::scene

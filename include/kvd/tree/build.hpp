@@ -6,6 +6,7 @@
 // E-nodes' fragments (thesis 5.3.3, 6.4.2).
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -16,11 +17,20 @@
 
 namespace kvd::tree {
 
+// Two triangles meeting: a fragment of `site` (an E- or T-cut) crosses the
+// plane of `triangle`.
+struct Contact {
+  symbolic::Symbolic_plane site;
+  std::size_t triangle;
+};
+
 // Raised when a fragment would have to be split by a T-node: the triangles
-// intersect at the build instant.
+// intersect at the build instant. `contact` says which, when known.
 class Build_error : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
+  Build_error(const std::string& what, Contact c) : std::runtime_error(what), contact(c) {}
+  std::optional<Contact> contact;
 };
 
 // Every classification a construction evaluated, in order: the construction
