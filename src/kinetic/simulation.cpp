@@ -97,7 +97,8 @@ public:
       std::sort(batch.failing.begin(), batch.failing.end());
       const auto tree_start = std::chrono::steady_clock::now();
       Time at = *next;
-      std::optional<tree::Kvd_tree> after = local() ? update_locally(at, batch) : build_at(at);
+      std::optional<tree::Kvd_tree> after;
+      if (!failing_contact(*next)) after = local() ? update_locally(at, batch) : build_at(at);
       if (!after && respond(*next)) {
         if (o_.validate == Validation::end) before_last.reset();  // the tree in force now has new motions
         continue;
@@ -145,8 +146,7 @@ private:
     try {
       return tree::build(*c_, t, full() ? &evaluated_ : nullptr);
     } catch (const tree::Build_error& e) {
-      build_error_ = e.what();
-      contact_ = e.contact;
+      failed(e);
       return std::nullopt;
     }
   }
@@ -165,8 +165,7 @@ private:
       batch.nodes_touched = cost.nodes_touched;
       return t;
     } catch (const tree::Build_error& e) {
-      build_error_ = e.what();
-      contact_ = e.contact;
+      failed(e);
       if constexpr (!floating) return std::nullopt;
     } catch (const std::logic_error&) {
       // Rounding can leave pieces that no longer fit together (a join that
@@ -185,11 +184,11 @@ private:
       if (t) return t;
       ++sim_.recovery.failed_builds;
       const std::string error = build_error_;  // the steps' own failures are not the news
-      const std::optional<tree::Contact> contact = contact_;
+      const std::vector<std::size_t> met = met_;
       auto later = step_forward(at, [](const tree::Kvd_tree&) { return true; });
       if (!later) {
         build_error_ = error;
-        contact_ = contact;
+        met_ = met;
         return std::nullopt;
       }
       ++sim_.recovery.rebuilds;
@@ -290,6 +289,34 @@ private:
     return std::pair{std::move(mid), std::move(*fresh)};
   }
 
+  // Whether the failures at `t` include contacts: VT, ET or TT certificates
+  // whose vertex lies in the triangle of another object at t (an object's
+  // own features lie in its faces' planes by construction); if so, the
+  // objects meeting go to met_ and the features to build_error_.
+  bool failing_contact(const Time& t) {
+    met_.clear();
+    std::string features;
+    for (std::size_t id : queue_->first()) {
+      const auto& cert = certs_[id];
+      if (!may_collide(cert.type)) continue;
+      const Touch th = touch(scene_, cert.vertices, cert.planes);
+      const auto objects = contact_objects(scene_, th);
+      if (objects.size() < 2 || !in_triangle(*c_, k_, th, t)) continue;
+      met_.insert(met_.end(), objects.begin(), objects.end());
+      features += (features.empty() ? "" : ", ") + std::string(to_string(cert.type)) + " " + cert.nodes;
+    }
+    std::sort(met_.begin(), met_.end());
+    met_.erase(std::unique(met_.begin(), met_.end()), met_.end());
+    if (!features.empty()) build_error_ = "a vertex or an edge reaches a triangle (" + features + ")";
+    return !met_.empty();
+  }
+
+  // A build or an update that found triangles crossing.
+  void failed(const tree::Build_error& e) {
+    build_error_ = e.what();
+    met_ = e.contact ? contact_objects(scene_, *e.contact) : std::vector<std::size_t>{};
+  }
+
   // Classifiers of the motions in force (their caches hold motion polynomials).
   void make_classifiers() {
     c_ = std::make_unique<const predicates::Classifier<K>>(k_, scene_);
@@ -304,8 +331,8 @@ private:
   // False when the run stops instead: Collisions::stop, an unknown contact,
   // or a contact of objects already reversed for this instant.
   bool respond(const Time& collision) {
-    if (o_.collisions != Collisions::reverse || !contact_) return false;
-    std::vector<std::size_t> objects = contact_objects(scene_, *contact_);
+    if (o_.collisions != Collisions::reverse) return false;
+    std::vector<std::size_t> objects = met_;
     std::erase_if(objects, [&](std::size_t o) { return !scene_.is_moving(o); });  // reversing changes nothing
     const bool again = !sim_.motion_changes.empty() && sim_.motion_changes.back().batches_before == sim_.batches.size() &&
                        k_.compare(sim_.motion_changes.back().collision, collision) == 0;
@@ -387,7 +414,7 @@ private:
   std::vector<Certificate<typename K::Poly>> certs_;
   std::map<std::vector<FT>, std::optional<Time>> roots_;
   std::string build_error_;  // why the last build threw
-  std::optional<tree::Contact> contact_;  // and which triangles it found meeting
+  std::vector<std::size_t> met_;  // the objects it found meeting
   Simulation<Time> sim_;
 };
 

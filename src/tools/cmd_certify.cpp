@@ -18,7 +18,8 @@ const char* const certify_help =
     "polynomial in force between consecutive event times, and every event with\n"
     "an interval isolating its time, its multiplicity and its order relation to\n"
     "the event before. proofs/check-certificate FILE verifies it independently.\n"
-    "Format: proofs/event-order-certificate.md.\n"
+    "Format: proofs/event-order-certificate.md. Triangles that meet stop the run\n"
+    "there (the format has no motion changes yet; kvd simulate reverses them).\n"
     "\n"
     "  --events N     stop after the batch holding the N-th failure (default 100)\n"
     "  --until T      stop after the last batch at a time <= T (exact)\n"
@@ -74,6 +75,8 @@ int certify(Args& args) {
   Scene_args sa;
   kinetic::Options o;
   o.validate = kinetic::Validation::none;
+  // Format kvd-event-order/1 has no motion changes yet: the run stops at a collision.
+  o.collisions = kinetic::Collisions::stop;
   std::optional<std::string> out;
   while (!args.done()) {
     const std::string& a = args.next();

@@ -1,9 +1,10 @@
-// The collision response X-collide (thesis 7.3.3): when a batch's update
-// finds two triangles meeting, the motions of both objects are reversed at a
-// rational time r strictly between the last batch and the collision, close
-// to the collision (proofs/collision_response.md). Positions are continuous
-// at r and every velocity of the two objects changes sign there; a rational
-// r keeps the reversed motions exact polynomials.
+// The collision response X-collide (thesis 7.3.3): when a batch's failures
+// include a contact, or its update finds two triangles crossing, the motions
+// of both objects are reversed at a rational time r strictly between the
+// last batch and the collision, close to the collision
+// (proofs/collision_response.md). Positions are continuous at r and every
+// velocity of the two objects changes sign there; a rational r keeps the
+// reversed motions exact polynomials.
 #pragma once
 
 #include <gmpxx.h>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "kvd/kernel/exact_time.hpp"
+#include "kvd/predicates/classify.hpp"
 #include "kvd/scene/scene.hpp"
 #include "kvd/tree/build.hpp"
 
@@ -27,8 +29,31 @@ mpq_class simplest_rational(const mpq_class& lo, const mpq_class& hi);
 // [lo(c) - g/16, lo(c) - g/64]. So a < r < c and c - r < g/8.
 mpq_class reversal_time(const Exact_time& a, const Exact_time& c);
 
-// The objects that meet at a contact, increasing (one when an object meets
-// itself).
+// What a VT, ET or TT certificate says may touch (thesis 6.2): a vertex and
+// a triangle. For VT and TT, the vertex and the triangle of the plane named;
+// for the reduced set's ET, E(I) E(J), the intersection point of edge I with
+// E(J) and a triangle of edge J (when the lines meet, the point is on line J,
+// and a triangle of J meets its line in exactly the segment J).
+struct Touch {
+  symbolic::Symbolic_vertex vertex;
+  std::size_t triangle;
+};
+Touch touch(const scene::Scene& s, const std::vector<symbolic::Symbolic_vertex>& vertices,
+            const std::vector<symbolic::Symbolic_plane>& planes);
+
+// Whether the vertex lies in the closed triangle at the instant t, when it
+// lies in the triangle's plane there (the certificate failing at t says so):
+// for each side, the vertex is not strictly on the other side from the
+// opposite corner, against the plane through the side and a coordinate axis
+// not parallel to the triangle. Signs at t only, exact in the exact kernel.
+// A VT failure against a vertical triangle, or a P-cut leaving a fragment (TT),
+// is no contact when this is false.
+template <class K>
+bool in_triangle(const predicates::Classifier<K>& c, const K& k, const Touch& touch, const typename K::Time& t);
+
+// The objects that meet, increasing (one when an object meets itself).
+std::vector<std::size_t> contact_objects(const scene::Scene& s, const Touch& touch);
+// Those of a crossing found by a build.
 std::vector<std::size_t> contact_objects(const scene::Scene& s, const tree::Contact& c);
 
 }  // namespace kvd::kinetic

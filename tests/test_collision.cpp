@@ -1,0 +1,276 @@
+// The collision response X-collide (thesis 7.3.3): the reversal time and the
+// reversed motions exactly, the motion changes of a hand-built scene written
+// out, and on collision scenes a run validated at every event whose objects
+// never interpenetrate, checked exactly at rational times between events.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "kernels.hpp"
+#include "kvd/kernel/exact_kernel.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kinetic/collision.hpp"
+#include "kvd/kinetic/simulation.hpp"
+#include "kvd/scene/generators.hpp"
+#include "kvd/scene/scene_io.hpp"
+#include "kvd/scene/triangle_intersection.hpp"
+
+using namespace kvd;
+
+namespace {
+scene::Scene load(const char* name) { return scene::load_scene(std::string(KVD_SOURCE_DIR) + "/data/" + name); }
+const Exact_kernel k;
+
+kinetic::Simulation<Exact_time> run(const scene::Scene& s, kinetic::Update u,
+                                    kinetic::Certificate_set set = kinetic::Certificate_set::reduced) {
+  kinetic::Options o;
+  o.update = u;
+  o.certificates = set;
+  o.max_events = 1000;
+  return kinetic::simulate(k, s, o);
+}
+
+// The instants of a run in order: the start, every batch and every motion
+// change, and the time limit.
+std::vector<Exact_time> instants(const scene::Scene& s, const kinetic::Simulation<Exact_time>& sim) {
+  std::vector<Exact_time> out{Exact_time(s.start)};
+  std::size_t c = 0;
+  for (std::size_t b = 0; b <= sim.batches.size(); ++b) {
+    for (; c < sim.motion_changes.size() && sim.motion_changes[c].batches_before == b; ++c)
+      out.push_back(Exact_time(sim.motion_changes[c].time));
+    if (b < sim.batches.size()) out.push_back(sim.batches[b].time);
+  }
+  if (sim.limit && k.compare(out.back(), Exact_time(*sim.limit)) < 0) out.push_back(Exact_time(*sim.limit));
+  return out;
+}
+
+// No two triangles meet with the motions in force, at a rational strictly
+// inside every interval between consecutive instants and at every motion
+// change; the instants never go back.
+void check_never_interpenetrate(const scene::Scene& s, const kinetic::Simulation<Exact_time>& sim) {
+  std::vector<mpq_class> probes;
+  for (const auto& c : sim.motion_changes) probes.push_back(c.time);
+  const std::vector<Exact_time> at = instants(s, sim);
+  for (std::size_t i = 1; i < at.size(); ++i) {
+    REQUIRE(k.compare(at[i - 1], at[i]) <= 0);
+    if (k.compare(at[i - 1], at[i]) < 0) probes.push_back(kinetic::rational_between(at[i - 1], at[i]));
+  }
+  for (const mpq_class& q : probes) {
+    const scene::Scene now = kinetic::motions_at(s, sim.motion_changes, q);
+    const auto met = scene::first_conflict(now, scene::triangles_at(now, q));
+    INFO("t = " << q.get_str());
+    CHECK(!met);
+    if (met) UNSCOPED_INFO("triangles " << met->first << " and " << met->second << " meet");
+  }
+  CHECK(probes.size() >= sim.batches.size());
+}
+
+// The same batches at the same exact times, the same motion changes.
+void check_same_run(const kinetic::Simulation<Exact_time>& a, const kinetic::Simulation<Exact_time>& b) {
+  REQUIRE(a.batches.size() == b.batches.size());
+  for (std::size_t i = 0; i < a.batches.size(); ++i) {
+    CHECK(k.compare(a.batches[i].time, b.batches[i].time) == 0);
+    CHECK(a.batches[i].failing == b.batches[i].failing);
+    CHECK(a.batches[i].structure == b.batches[i].structure);
+  }
+  REQUIRE(a.motion_changes.size() == b.motion_changes.size());
+  for (std::size_t i = 0; i < a.motion_changes.size(); ++i) {
+    CHECK(a.motion_changes[i].time == b.motion_changes[i].time);
+    CHECK(a.motion_changes[i].objects == b.motion_changes[i].objects);
+    CHECK(a.motion_changes[i].motions == b.motion_changes[i].motions);
+    CHECK(a.motion_changes[i].batches_before == b.motion_changes[i].batches_before);
+  }
+  CHECK(a.structure_hash == b.structure_hash);
+}
+}  // namespace
+
+TEST_CASE("simplest_rational: the smallest denominator in a closed interval", "[collision]") {
+  using test::q;
+  CHECK(kinetic::simplest_rational(q(1, 3), q(1, 2)) == q(1, 2));
+  CHECK(kinetic::simplest_rational(q(3, 10), q(7, 20)) == q(1, 3));
+  CHECK(kinetic::simplest_rational(q(7, 10), q(7, 10)) == q(7, 10));
+  CHECK(kinetic::simplest_rational(q(-1, 2), q(-1, 3)) == q(-1, 2));
+  CHECK(kinetic::simplest_rational(q(3, 2), q(5, 2)) == 2);
+  CHECK(kinetic::simplest_rational(mpq_class(-1), mpq_class(1)) == 0);
+  CHECK(kinetic::simplest_rational(q(355, 113) - q(1, 100000), q(355, 113) + q(1, 100000)) == q(355, 113));
+  // Against a search of every smaller denominator, on random intervals.
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 300; ++i) {
+    const mpq_class lo = q(static_cast<long>(rng() % 2001) - 1000, 1 + static_cast<long>(rng() % 97));
+    const mpq_class hi = lo + q(1 + static_cast<long>(rng() % 50), 1 + static_cast<long>(rng() % 5000));
+    const mpq_class r = kinetic::simplest_rational(lo, hi);
+    INFO("[" << lo.get_str() << ", " << hi.get_str() << "] gave " << r.get_str());
+    REQUIRE((lo <= r && r <= hi));
+    for (long d = 1; d < r.get_den().get_si(); ++d) {
+      mpz_class n;
+      mpz_class ld = mpz_class(lo.get_num() * d);
+      mpz_cdiv_q(n.get_mpz_t(), ld.get_mpz_t(), lo.get_den_mpz_t());  // the least n with n/d >= lo
+      REQUIRE(q(n.get_si(), d) > hi);
+    }
+  }
+}
+
+TEST_CASE("the reversal time lies strictly between the last batch and the collision, close to it", "[collision]") {
+  using test::q;
+  // sqrt(2) (a root of t^2 - 2 in (1, 2)) after 1, and the rational 3 after 5/2.
+  const Exact_time root2 = Exact_time::algebraic({-2, 0, 1}, 1, 2);
+  const mpq_class r = kinetic::reversal_time(Exact_time(mpq_class(1)), root2);
+  CHECK(k.compare(Exact_time(r), Exact_time(mpq_class(1))) > 0);
+  CHECK(k.compare(Exact_time(r), root2) < 0);
+  CHECK(k.compare(Exact_time(r + (r - 1) / 7), root2) > 0);  // sqrt(2) - r < (r - 1) / 7
+  const mpq_class s = kinetic::reversal_time(Exact_time(q(5, 2)), Exact_time(q(3, 1)));
+  CHECK((q(5, 2) < s && s < q(3, 1)));
+  CHECK(s >= q(3, 1) - q(1, 32));
+  CHECK(s <= q(3, 1) - q(1, 128));
+}
+
+TEST_CASE("a reversed motion keeps the position at r and negates every velocity", "[collision]") {
+  using test::q;
+  scene::Motion m;
+  m.kind = scene::Motion::Kind::matrix;
+  std::mt19937_64 rng(3);
+  auto random_poly = [&] {
+    std::vector<mpq_class> c;
+    for (int i = 0; i < 4; ++i) c.push_back(q(static_cast<long>(rng() % 21) - 10, 1 + static_cast<long>(rng() % 7)));
+    return scene::QPoly(std::move(c));
+  };
+  for (auto& row : m.matrix)
+    for (auto& p : row) p = random_poly();
+  for (auto& p : m.translation) p = random_poly();
+  m.vertices.push_back({{random_poly(), random_poly(), random_poly(), scene::QPoly(1)}});
+  const mpq_class r = q(7, 3);
+  const scene::Motion rev = scene::reversed(m, r);
+  auto check = [&](const scene::QPoly& p, const scene::QPoly& p_rev) {
+    CHECK(p_rev(r) == p(r));
+    CHECK(p_rev.derivative()(r) == -p.derivative()(r));
+    CHECK(p_rev.derivative().derivative()(r) == p.derivative().derivative()(r));
+    CHECK(p_rev(r + 1) == p(r - 1));
+  };
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 4; ++j) check(m.matrix[i][j], rev.matrix[i][j]);
+  for (std::size_t i = 0; i < 3; ++i) check(m.translation[i], rev.translation[i]);
+  for (int i = 0; i < 4; ++i) check(m.vertices[0][i], rev.vertices[0][i]);
+  CHECK(scene::reversed(rev, r) == m);
+}
+
+TEST_CASE("collisions.json: each landing and the head-on meeting reverse the objects that meet", "[collision][kinetic]") {
+  // Written out: the flat triangle lands face down at t = 2, the tilted one
+  // on a vertex at t = 3, the twins both at t = 4 (one motion change), the
+  // head-on pair meets face to face at t = 6. Every landing object falls at
+  // a constant speed, so its reversed motion is z + (t - 2r) * speed.
+  const scene::Scene s = load("collisions.json");
+  const auto set = GENERATE(kinetic::Certificate_set::reduced, kinetic::Certificate_set::full);
+  const auto sim = run(s, kinetic::Update::rebuild, set);
+  CHECK(sim.valid());
+  INFO(sim.failure);
+  CHECK(!sim.collision);
+  REQUIRE(sim.motion_changes.size() == 4);
+  const std::vector<std::vector<std::size_t>> objects{{1}, {2}, {3, 4}, {5, 6}};
+  const long collisions[] = {2, 3, 4, 6};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto& c = sim.motion_changes[i];
+    INFO("motion change " << i);
+    CHECK(c.objects == objects[i]);
+    CHECK(k.compare(c.collision, Exact_time(mpq_class(collisions[i]))) == 0);
+    CHECK(c.time < collisions[i]);
+    const Exact_time before = c.batches_before ? sim.batches[c.batches_before - 1].time : Exact_time(s.start);
+    CHECK(k.compare(before, Exact_time(c.time)) < 0);
+    if (i + 1 < 4) CHECK(c.batches_before <= sim.motion_changes[i + 1].batches_before);
+  }
+  // The flat triangle: z = -t becomes z = t - 2r.
+  const auto& flat = sim.motion_changes[0];
+  CHECK(flat.motions[0].kind == scene::Motion::Kind::translation);
+  CHECK(flat.motions[0].translation[2] == scene::QPoly({-2 * flat.time, 1}));
+  // The right twin falls at speed 2: z = -2t becomes z = 2t - 4r.
+  const auto& twins = sim.motion_changes[2];
+  CHECK(twins.motions[1].translation[2] == scene::QPoly({-4 * twins.time, 2}));
+  check_never_interpenetrate(s, sim);
+  if (set == kinetic::Certificate_set::reduced) check_same_run(sim, run(s, kinetic::Update::local));
+}
+
+TEST_CASE("generated collision scenes validate at every event and never interpenetrate", "[collision][kinetic]") {
+  // A tenth of the triangles moving (as kvd bench thesis generates them):
+  // the first two sizes meet before the scene's end. Local and rebuild
+  // updates give the same run, motion changes included.
+  std::size_t changes = 0;
+  for (std::size_t n : {25, 50}) {
+    scene::Uniform_params p;
+    p.triangles = n;
+    p.moving = mpq_class(1, 10);
+    p.seed = 1;
+    const scene::Scene s = scene::read_scene(scene::write_scene(scene::uniform_density(p)), "generated");
+    INFO(n << " triangles");
+    const auto local = run(s, kinetic::Update::local);
+    CHECK(local.valid());
+    INFO(local.failure);
+    CHECK(local.stopped != kinetic::Stop::collision);
+    check_never_interpenetrate(s, local);
+    check_same_run(local, run(s, kinetic::Update::rebuild));
+    changes += local.motion_changes.size();
+  }
+  CHECK(changes >= 1);
+}
+
+TEMPLATE_TEST_CASE("every kernel answers the collisions of collisions.json alike", "[collision][kinetic]", KVD_ALL_KERNELS) {
+  // The floating-point kernels detect the same contacts; their reversal
+  // times are rationals of their own (from their event times).
+  const scene::Scene s = load("collisions.json");
+  TestType kernel;
+  kinetic::Options o;
+  o.max_events = 1000;
+  const auto sim = kinetic::simulate(kernel, s, o);
+  CHECK(sim.valid());
+  REQUIRE(sim.motion_changes.size() == 4);
+  const long collisions[] = {2, 3, 4, 6};
+  for (std::size_t i = 0; i < 4; ++i) {
+    CHECK(std::abs(kernel.to_double(sim.motion_changes[i].collision) - static_cast<double>(collisions[i])) < 1e-6);
+    CHECK(sim.motion_changes[i].time < collisions[i]);
+  }
+  CHECK(sim.motion_changes[2].objects == std::vector<std::size_t>{3, 4});
+}
+
+TEST_CASE("with --collisions stop a face landing flat stops the run at its exact time", "[collision][kinetic]") {
+  // The flat triangle's three vertices reach the floor together: VT failures,
+  // which are contacts, and no fragment ever straddles the floor's plane.
+  const scene::Scene s = scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 5}, "objects": [
+    {"vertices": [[-20,-20,0],[20,-20,0],[0,20,0]], "triangles": [[0,1,2]]},
+    {"vertices": [[-3,-3,2],[-1,-3,2],[-2,-1,2]], "triangles": [[0,1,2]], "motion": {"translation": [0,0,[0,-1]]}}]})",
+                                           "inline.json");
+  kinetic::Options o;
+  o.collisions = kinetic::Collisions::stop;
+  const auto sim = kinetic::simulate(k, s, o);
+  REQUIRE(sim.stopped == kinetic::Stop::collision);
+  CHECK(k.compare(sim.time_reached, Exact_time(mpq_class(2))) == 0);
+  REQUIRE(sim.collision);
+  CHECK(sim.collision->find("VT") != std::string::npos);
+}
+
+TEMPLATE_TEST_CASE("in_triangle: a vertex in a triangle's plane touches it only inside, boundary included", "[collision]",
+                   KVD_ALL_KERNELS) {
+  // Object 0: a horizontal triangle (plane z = 0) and a vertical one (plane
+  // y = 10). Object 1: vertices that reach z = 0 at t = 1 and y = 10 at t = 2,
+  // inside, outside, on a side and at a corner.
+  const scene::Scene s = scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 5}, "objects": [
+    {"vertices": [[0,0,0],[4,0,0],[0,4,0],[20,10,0],[24,10,0],[20,10,4]], "triangles": [[0,1,2],[3,4,5]]},
+    {"vertices": [[1,1,1],[3,3,1],[2,2,1],[0,"5/2",1],[4,0,1],
+                  [21,8,1],[23,8,3],[21,8,3]], "triangles": [[0,1,3],[2,4,5],[5,6,7]],
+     "motion": {"vertices": [[1,1,[1,-1],1],[3,3,[1,-1],1],[2,2,[1,-1],1],[0,"5/2",[1,-1],1],[4,0,[1,-1],1],
+                             [21,[8,1],1,1],[23,[8,1],3,1],[21,[8,1],3,1]]}}]})",
+                                           "inline.json", {.allow_intersecting = true});
+  TestType k;
+  const predicates::Classifier<TestType> c(k, s);
+  const auto at = [&](long t) { return k.time(from_rational<typename TestType::FT>(mpq_class(t))); };
+  const auto in = [&](std::size_t v, std::size_t t, long time) {
+    return kinetic::in_triangle(c, k, {symbolic::Symbolic_vertex::endpoint(v), t}, at(time));
+  };
+  // The horizontal triangle at t = 1 (vertex ids 6.. are object 1's).
+  CHECK(in(6, 0, 1));    // (1, 1): inside
+  CHECK(!in(7, 0, 1));   // (3, 3): outside, beyond the long side
+  CHECK(in(8, 0, 1));    // (2, 2): on the long side
+  CHECK(in(9, 0, 1));    // (0, 5/2): on the side x = 0
+  CHECK(in(10, 0, 1));   // (4, 0): at a corner
+  // The vertical triangle at t = 2.
+  CHECK(in(11, 1, 2));   // (21, 10, 1): inside
+  CHECK(!in(12, 1, 2));  // (23, 10, 3): outside, beyond the sloping side
+  CHECK(in(13, 1, 2));   // (21, 10, 3): on the sloping side
+}
