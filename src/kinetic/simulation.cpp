@@ -345,26 +345,26 @@ private:
     if (again) r = sim_.motion_changes.back().time;
     else r = reversal_time(collision);
     if (!r) return false;
-    Motion_change<Time> change{*r, collision, {}, {}, sim_.batches.size(), build_error_};
+    if (again) sim_.motion_changes.back().contact += "; " + build_error_;
+    else sim_.motion_changes.push_back({*r, collision, {}, {}, sim_.batches.size(), build_error_});
+    Motion_change<Time>& record = sim_.motion_changes.back();
     for (std::size_t o : objects) {
       scene_.objects[o].motion = scene::reversed(scene_.objects[o].motion, *r);
-      change.objects.push_back(o);
-      change.motions.push_back(scene_.objects[o].motion);
-    }
-    if (again) {
-      Motion_change<Time>& last = sim_.motion_changes.back();
-      for (std::size_t i = 0; i < change.objects.size(); ++i) {
-        const auto at = std::ranges::upper_bound(last.objects, change.objects[i]) - last.objects.begin();
-        last.objects.insert(last.objects.begin() + at, change.objects[i]);
-        last.motions.insert(last.motions.begin() + at, change.motions[i]);
-      }
-      last.contact += "; " + change.contact;
-    } else {
-      sim_.motion_changes.push_back(change);
+      const auto at = std::ranges::upper_bound(record.objects, o) - record.objects.begin();
+      record.objects.insert(record.objects.begin() + at, o);
+      record.motions.insert(record.motions.begin() + at, scene_.objects[o].motion);
     }
     make_classifiers();
     now_ = k_.time(from_rational<FT>(*r));
-    if (observer_) observer_->motion_change(change);
+    // The certificates are non-zero at r, and positions are continuous
+    // there, so the tree in force is the tree just after r unless a
+    // classification that vanished identically under the old motions (one the
+    // perturbation decided) no longer does: the build says which.
+    if (std::optional<tree::Kvd_tree> after = try_build(now_)) {
+      record.tree_changed |= tree::first_difference(current_, *after).has_value();
+      current_ = std::move(*after);
+    }
+    if (observer_) observer_->motion_change(record);
     make_certificates();
     return true;
   }

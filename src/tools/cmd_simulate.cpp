@@ -58,7 +58,7 @@ const char* const simulate_help =
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
     "           \"nodes_touched\": N}, ...], \"motion_changes\": [{\"time\": EXACT, \"approx\",\n"
     "           \"collision\": EXACT, \"collision_approx\", \"objects\": [ID, ...], \"motions\": [...],\n"
-    "           \"batches_before\": N, \"contact\": TEXT}, ...], \"update\": U,\n"
+    "           \"batches_before\": N, \"tree_changed\": BOOL, \"contact\": TEXT}, ...], \"update\": U,\n"
     "           \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
@@ -91,7 +91,7 @@ std::string motion_change_fields(const K& k, const kinetic::Motion_change<typena
          ", \"collision\": " + json_string(k.to_string(c.collision)) +
          ", \"collision_approx\": " + json_string(approx(k.to_double(c.collision))) + ", \"objects\": [" + objects +
          "], \"motions\": [" + motions + "], \"batches_before\": " + std::to_string(c.batches_before) +
-         ", \"contact\": " + json_string(c.contact);
+         ", \"tree_changed\": " + (c.tree_changed ? "true" : "false") + ", \"contact\": " + json_string(c.contact);
 }
 
 // JSON Lines, one per certificate failure and one per motion change, in the

@@ -86,6 +86,7 @@ struct Motion_change {
   std::vector<scene::Motion> motions;  // the new motion of each object
   std::size_t batches_before = 0;      // the batches processed before it
   std::string contact;                 // which features met, in words
+  bool tree_changed = false;           // whether the tree just after `time` differs from the tree before
 };
 
 using Type_counts = std::array<std::size_t, certificate_types>;
