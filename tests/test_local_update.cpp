@@ -28,6 +28,29 @@ std::pair<tree::Kvd_tree, std::size_t> moved(const predicates::Classifier<K>& c,
   return {std::move(t), cost.nodes_touched};
 }
 
+// A thesis figure on a hand-built scene: the tree at `from`, and the local
+// update of the batch failing at `at` (the sites of every certificate in
+// force at `from` failing then), which must give the tree a build gives just
+// after `at`, a different one.
+struct Figure {
+  tree::Kvd_tree before, after;
+};
+Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at) {
+  const Exact_kernel k;
+  const predicates::Classifier<Exact_kernel> c(k, s);
+  Figure f{tree::build(c, Exact_time(from)), {}};
+  std::set<SP> moving;
+  for (const auto& cert : kinetic::reduced_certificates(c, f.before, Exact_time(from)))
+    for (const auto& q : cert.polys)
+      if (auto r = k.next_root(q, Exact_time(from)); r && k.compare(*r, Exact_time(at)) == 0)
+        moving.merge(kinetic::moving_sites(s, cert));
+  REQUIRE(!moving.empty());
+  f.after = moved(c, f.before, Exact_time(at), moving).first;
+  CHECK(!tree::first_difference(f.after, tree::build(c, Exact_time(at))));
+  CHECK(tree::first_difference(f.after, f.before));
+  return f;
+}
+
 kinetic::Simulation<Exact_time> run(const scene::Scene& s, kinetic::Update u, std::size_t events) {
   kinetic::Options o;
   o.update = u;
@@ -96,12 +119,9 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
   // floor's edge e1 at t = 2 (test_simulation derives the times). The local
   // update moves v4's sites (its P-cut, its two edges, the mover) and the
   // crossed edge's sites; the result is written out here and equals a build.
-  const scene::Scene s = load("two-triangles.json");
-  const Exact_kernel k;
-  const predicates::Classifier<Exact_kernel> c(k, s);
-  const tree::Kvd_tree before = tree::build(c, Exact_time(mpq_class(1)));
+  const Figure f = figure(load("two-triangles.json"), 1, 2);
   // v4 on the positive side of E(1), below the floor T(0).
-  CHECK(before.describe() == R"(P(0) [SV(v0)]
+  CHECK(f.before.describe() == R"(P(0) [SV(v0)]
   + P(1) [SV(v1)]
     - E(0) [SV(v0) SV(v1) SE(e0)]
       + E(2) [SV(e2,P1) SV(v0) SE(e2)]
@@ -120,21 +140,10 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
                     + E(5) [SV(v5) SV(e5,P4) SE(e5)]
                       + T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,P4) SE(P4,T1)]
 )");
-  const auto certs = kinetic::reduced_certificates(c, before, Exact_time(mpq_class(1)));
-  std::set<SP> moving;
-  for (const auto& cert : certs)
-    for (const auto& q : cert.polys)
-      if (auto r = k.next_root(q, Exact_time(mpq_class(1))); r && k.compare(*r, Exact_time(mpq_class(2))) == 0)
-        moving.merge(kinetic::moving_sites(s, cert));
-  REQUIRE(!moving.empty());
-  const Exact_time at(mpq_class(2));
-  const auto [after, touched] = moved(c, before, at, moving);
-  CHECK(!tree::first_difference(after, tree::build(c, at)));
-  CHECK(tree::first_difference(after, before));
   // v4 has crossed to the negative side of E(1): its P-cut is inserted out
   // of order under E(1)'s left subtree, and its edges e3, e4 are split by
   // E(1) (the SPLIT effect), the pieces beyond E(1) staying under T(0).
-  CHECK(after.describe() == R"(P(0) [SV(v0)]
+  CHECK(f.after.describe() == R"(P(0) [SV(v0)]
   + P(1) [SV(v1)]
     - E(0) [SV(v0) SV(v1) SE(e0)]
       + E(2) [SV(e2,P1) SV(v0) SE(e2)]
@@ -154,6 +163,118 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
                   + E(4) [SV(e4,E1) SV(v5) SE(e4)]
                     + E(5) [SV(v5) SV(v3) SE(e5)]
                       + T(1) [SV(v3) SE(e3), SV(e3,E1) SE(E1,T1), SV(e4,E1) SE(e4), SV(v5) SE(e5)]
+)");
+}
+
+TEST_CASE("VV update of thesis Figs. 7.1 and 7.6: a vertex crossing the P-plane of an ancestor vertex", "[local]") {
+  // The mover, beside the floor, translates along y; its top vertex v5
+  // crosses P(2), the plane y = 4 of the floor's vertex v2, at t = 3.
+  const Figure f = figure(scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 10}, "objects": [
+    {"vertices": [[-4,-4,0],[4,-4,0],[0,4,0]], "triangles": [[0,1,2]]},
+    {"vertices": [[5,0,1],[6,0,1],[5,1,2]], "triangles": [[0,1,2]], "motion": {"translation": [0,[0,1],0]}}]})",
+                                                  "vv.json"),
+                          1, 3);
+  // Before: the mover's nodes on P(2)'s negative side, under E(1).
+  CHECK(f.before.describe() == R"(P(0) [SV(v0)]
+  + P(1) [SV(v1)]
+    - E(0) [SV(v0) SV(v1) SE(e0)]
+      + E(2) [SV(e2,P1) SV(v0) SE(e2)]
+        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]
+    + P(2) [SV(v2)]
+      - E(1) [SV(v1) SV(v2) SE(e1)]
+        - P(3) [SV(v3)]
+          + P(4) [SV(v4)]
+            - E(3) [SV(v3) SV(v4) SE(e3)]
+              + E(5) [SV(e5,P4) SV(v3) SE(e5)]
+                + T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]
+            + P(5) [SV(v5)]
+              - E(4) [SV(v4) SV(v5) SE(e4)]
+                + E(5) [SV(v5) SV(e5,P4) SE(e5)]
+                  + T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,P4) SE(P4,T1)]
+        + E(2) [SV(v2) SV(e2,P1) SE(e2)]
+          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
+)");
+  // After: P(5) has moved to P(2)'s positive side (Fig. 7.1(c)); its edges
+  // e4 and e5 moved with it and were split by P(2) (Fig. 7.1(d)): their
+  // pieces on the negative side stay under P(4), ending at the threads
+  // SV(e4,P2) and SV(e5,P2).
+  CHECK(f.after.describe() == R"(P(0) [SV(v0)]
+  + P(1) [SV(v1)]
+    - E(0) [SV(v0) SV(v1) SE(e0)]
+      + E(2) [SV(e2,P1) SV(v0) SE(e2)]
+        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]
+    + P(2) [SV(v2)]
+      - E(1) [SV(v1) SV(v2) SE(e1)]
+        - P(3) [SV(v3)]
+          + P(4) [SV(v4)]
+            - E(3) [SV(v3) SV(v4) SE(e3)]
+              + E(5) [SV(e5,P4) SV(v3) SE(e5)]
+                + T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]
+            + E(4) [SV(v4) SV(e4,P2) SE(e4)]
+              + E(5) [SV(e5,P2) SV(e5,P4) SE(e5)]
+                + T(1) [SV(v4) SE(e4), SV(e4,P2) SE(P2,T1), SV(e5,P2) SE(e5), SV(e5,P4) SE(P4,T1)]
+        + E(2) [SV(v2) SV(e2,P1) SE(e2)]
+          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
+      + P(5) [SV(v5)]
+        - E(4) [SV(e4,P2) SV(v5) SE(e4)]
+          + E(5) [SV(v5) SV(e5,P2) SE(e5)]
+            + T(1) [SV(e4,P2) SE(e4), SV(v5) SE(e5), SV(e5,P2) SE(P2,T1)]
+)");
+}
+
+TEST_CASE("E-update of thesis Fig. 7.10: an edge event detected with IV and II certificates", "[local]") {
+  // The mover straddles the floor edge e1's E-plane and translates along y;
+  // at t = 8 its vertex v3 crosses E(1), and with it the intersection
+  // points of its edges e3 and e5 with E(1) cross P-planes and each other.
+  const Figure f = figure(scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 10}, "objects": [
+    {"vertices": [[-4,-4,0],[4,-4,0],[0,4,0]], "triangles": [[0,1,2]]},
+    {"vertices": [[1,-2,1],[4,-2,1],[2,-1,2]], "triangles": [[0,1,2]], "motion": {"translation": [0,[0,"1/2"],0]}}]})",
+                                                  "iv.json"),
+                          4, 8);
+  // Before: v3 is beyond E(1), under the floor's T(0); e3 and e5 are split
+  // by E(1) at the intersection points SV(e3,E1) and SV(e5,E1).
+  CHECK(f.before.describe() == R"(P(0) [SV(v0)]
+  + P(1) [SV(v1)]
+    - E(0) [SV(v0) SV(v1) SE(e0)]
+      + E(2) [SV(e2,P1) SV(v0) SE(e2)]
+        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]
+    + P(2) [SV(v2)]
+      - E(1) [SV(v1) SV(v2) SE(e1)]
+        - P(4) [SV(v4)]
+          - E(3) [SV(e3,E1) SV(v4) SE(e3)]
+            + T(1) [SV(e3,E1) SE(e3), SV(v4) SE(P4,T1), SV(P4,E1,T1) SE(E1,T1)]
+          + P(5) [SV(v5)]
+            - E(4) [SV(v4) SV(v5) SE(e4)]
+              + E(5) [SV(v5) SV(e5,E1) SE(e5)]
+                + T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,E1) SE(E1,T1), SV(P4,E1,T1) SE(P4,T1)]
+        + E(2) [SV(v2) SV(e2,P1) SE(e2)]
+          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
+            - P(3) [SV(v3)]
+              + E(3) [SV(v3) SV(e3,E1) SE(e3)]
+                + E(5) [SV(e5,E1) SV(v3) SE(e5)]
+                  + T(1) [SV(v3) SE(e3), SV(e3,E1) SE(E1,T1), SV(e5,E1) SE(e5)]
+)");
+  // After: the whole mover is on E(1)'s negative side; the pieces of e3 and
+  // e5 on either side are merged into one fragment each (the merging set),
+  // and the intersection points are gone.
+  CHECK(f.after.describe() == R"(P(0) [SV(v0)]
+  + P(1) [SV(v1)]
+    - E(0) [SV(v0) SV(v1) SE(e0)]
+      + E(2) [SV(e2,P1) SV(v0) SE(e2)]
+        + T(0) [SV(v0) SE(e0), SV(v1) SE(P1,T0), SV(e2,P1) SE(e2)]
+    + P(2) [SV(v2)]
+      - E(1) [SV(v1) SV(v2) SE(e1)]
+        - P(3) [SV(v3)]
+          + P(4) [SV(v4)]
+            - E(3) [SV(v3) SV(v4) SE(e3)]
+              + E(5) [SV(e5,P4) SV(v3) SE(e5)]
+                + T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]
+            + P(5) [SV(v5)]
+              - E(4) [SV(v4) SV(v5) SE(e4)]
+                + E(5) [SV(v5) SV(e5,P4) SE(e5)]
+                  + T(1) [SV(v4) SE(e4), SV(v5) SE(e5), SV(e5,P4) SE(P4,T1)]
+        + E(2) [SV(v2) SV(e2,P1) SE(e2)]
+          + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
 )");
 }
 
