@@ -34,12 +34,9 @@ kinetic::Simulation<Exact_time> run(const scene::Scene& s, kinetic::Update u,
 // change, and the time limit.
 std::vector<Exact_time> instants(const scene::Scene& s, const kinetic::Simulation<Exact_time>& sim) {
   std::vector<Exact_time> out{Exact_time(s.start)};
-  std::size_t c = 0;
-  for (std::size_t b = 0; b <= sim.batches.size(); ++b) {
-    for (; c < sim.motion_changes.size() && sim.motion_changes[c].batches_before == b; ++c)
-      out.push_back(Exact_time(sim.motion_changes[c].time));
-    if (b < sim.batches.size()) out.push_back(sim.batches[b].time);
-  }
+  kinetic::in_run_order(
+      sim, [&](std::size_t c) { out.push_back(Exact_time(sim.motion_changes[c].time)); },
+      [&](std::size_t b) { out.push_back(sim.batches[b].time); });
   if (sim.limit && k.compare(out.back(), Exact_time(*sim.limit)) < 0) out.push_back(Exact_time(*sim.limit));
   return out;
 }

@@ -99,24 +99,21 @@ std::string motion_change_fields(const K& k, const kinetic::Motion_change<typena
 template <class K>
 std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>& sim) {
   std::string out;
-  std::size_t change = 0;
-  const auto changes_before = [&](std::size_t b) {
-    for (; change < sim.motion_changes.size() && sim.motion_changes[change].batches_before <= b; ++change)
-      out += "{\"motion_change\": " + std::to_string(change) + ", " + motion_change_fields(k, sim.motion_changes[change]) +
-             "}\n";
-  };
-  for (std::size_t b = 0; b < sim.batches.size(); ++b) {
-    changes_before(b);
-    const auto& e = sim.batches[b];
-    const auto [lo, hi] = interval(k, e.time);
-    const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(k.to_string(e.time)) +
-                             ", \"interval\": [" + json_string(lo) + ", " + json_string(hi) +
-                             "], \"approx\": " + json_string(approx(k.to_double(e.time)));
-    for (const auto& f : e.failing)
-      out += head + ", \"certificate\": " + json_string(kinetic::to_string(f.type)) +
-             ", \"nodes\": " + json_string(f.nodes) + "}\n";
-  }
-  changes_before(sim.batches.size());
+  kinetic::in_run_order(
+      sim,
+      [&](std::size_t c) {
+        out += "{\"motion_change\": " + std::to_string(c) + ", " + motion_change_fields(k, sim.motion_changes[c]) + "}\n";
+      },
+      [&](std::size_t b) {
+        const auto& e = sim.batches[b];
+        const auto [lo, hi] = interval(k, e.time);
+        const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(k.to_string(e.time)) +
+                                 ", \"interval\": [" + json_string(lo) + ", " + json_string(hi) +
+                                 "], \"approx\": " + json_string(approx(k.to_double(e.time)));
+        for (const auto& f : e.failing)
+          out += head + ", \"certificate\": " + json_string(kinetic::to_string(f.type)) +
+                 ", \"nodes\": " + json_string(f.nodes) + "}\n";
+      });
   return out;
 }
 
@@ -180,25 +177,22 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << ", \"tree_update_share\": " << fixed(u.tree_share, 3)
               << ", \"certificate_update_share\": " << fixed(u.certificate_share, 3) << "}\n";
   } else {
-    std::size_t change = 0;
-    const auto changes_before = [&](std::size_t b) {
-      for (; change < sim.motion_changes.size() && sim.motion_changes[change].batches_before <= b; ++change) {
-        const auto& c = sim.motion_changes[change];
-        std::string objects;
-        for (std::size_t o : c.objects) objects += (objects.empty() ? "" : ", ") + std::to_string(o);
-        std::cout << "motion change at t = " << approx(c.time.get_d()) << " (" << c.time.get_str() << "): objects "
-                  << objects << " reversed before meeting at t = " << approx(k.to_double(c.collision)) << "\n";
-      }
-    };
     if (list)
-      for (std::size_t i = 0; i <= sim.batches.size(); ++i) {
-        changes_before(i);
-        if (i == sim.batches.size()) break;
-        const auto& e = sim.batches[i];
-        std::cout << "batch " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
-                  << "): " << e.failures() << " of " << e.certificates << " certificates fail, tree "
-                  << (e.changed ? "changed" : "unchanged") << "\n";
-      }
+      kinetic::in_run_order(
+          sim,
+          [&](std::size_t i) {
+            const auto& c = sim.motion_changes[i];
+            std::string objects;
+            for (std::size_t o : c.objects) objects += (objects.empty() ? "" : ", ") + std::to_string(o);
+            std::cout << "motion change at t = " << approx(c.time.get_d()) << " (" << c.time.get_str() << "): objects "
+                      << objects << " reversed before meeting at t = " << approx(k.to_double(c.collision)) << "\n";
+          },
+          [&](std::size_t i) {
+            const auto& e = sim.batches[i];
+            std::cout << "batch " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
+                      << "): " << e.failures() << " of " << e.certificates << " certificates fail, tree "
+                      << (e.changed ? "changed" : "unchanged") << "\n";
+          });
     std::cout << "kernel:        " << K::name << ", " << set << " certificates, " << queue << " queue, " << update
               << " update\n"
               << "events:        " << sim.failures << " certificate failures in " << sim.batches.size() << " batches ("

@@ -167,6 +167,17 @@ template <class K>
 Simulation<typename K::Time> simulate(const K& kernel, const scene::Scene& s, const Options& options,
                                       Observer<K>* observer = nullptr);
 
+// Walks a run in its order: every motion change (on_change with its index)
+// before the batches that follow it, every batch (on_batch with its index).
+template <class Time, class On_change, class On_batch>
+void in_run_order(const Simulation<Time>& sim, On_change on_change, On_batch on_batch) {
+  std::size_t c = 0;
+  for (std::size_t b = 0; b <= sim.batches.size(); ++b) {
+    for (; c < sim.motion_changes.size() && sim.motion_changes[c].batches_before <= b; ++c) on_change(c);
+    if (b < sim.batches.size()) on_batch(b);
+  }
+}
+
 // The scene with the motions in force at t: s with every change at a time
 // <= t applied in order.
 template <class Time>
