@@ -1,40 +1,43 @@
-// The thesis's reduced certificate set (thesis 6.4), computed over the tree in
-// force. "Walls" are found by proximity (thesis 6.4): for a point, the
+// The thesis's reduced certificate set (thesis 6.4), node by node. "Walls" are found by proximity (thesis 6.4): for a point, the
 // nearest ancestor P-cuts along y (the intersection cuts stored at ancestor
 // E-nodes included, thesis 6.4.2), the nearest ancestor E-cuts along x and
 // the nearest ancestor T-cuts along z, on each side. Distances are compared
 // exactly, just after the current time; a tie keeps every tied wall, so the
 // set only grows in degenerate cases. Formulas: proofs/certificates.md.
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "kvd/geometry/plucker.hpp"
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/kinetic/certificate.hpp"
+#include "kvd/kinetic/reduced_upkeep.hpp"
 #include "kvd/kinetic/positive.hpp"
 
 namespace kvd::kinetic {
 
 namespace {
-
 using SV = symbolic::Symbolic_vertex;
 using SP = symbolic::Symbolic_plane;
 using SE = symbolic::Symbolic_edge;
+}  // namespace
 
 template <class K>
-class Reduced {
+class Reduced_maker<K>::Impl {
   using P = typename K::Poly;
   using FT = typename K::FT;
 
 public:
-  Reduced(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now)
+  Impl(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now)
       : c_(c), t_(t), now_(now), s_(c.motion().scene()), y_{{P(), P(FT(1)), P(), P()}} {}
 
-  std::vector<Certificate<P>> run() {
-    if (t_.root >= 0) walk(t_.root);
+  std::vector<Certificate<P>> of_node(int n, const std::vector<int>& path) {
+    at_ = n;
+    path_ = &path;
+    visit(n);
     std::vector<Certificate<P>> out;
     for (auto& [key, cert] : made_) out.push_back(std::move(cert));
+    made_.clear();
     return out;
   }
 
@@ -54,15 +57,6 @@ private:
 
   const tree::Node& node(int i) const { return t_.nodes[static_cast<std::size_t>(i)]; }
 
-  void walk(int n) {
-    at_ = n;
-    visit(n);
-    path_.push_back(n);
-    for (int child : {node(n).left, node(n).right})
-      if (child >= 0) walk(child);
-    path_.pop_back();
-  }
-
   void visit(int n) {
     const tree::Node& nd = node(n);
     if (const auto* v = std::get_if<SV>(&nd.fragment)) return point_node(*v);
@@ -74,7 +68,7 @@ private:
   void point_node(const SV& v) {
     const SP pv{SP::Kind::P, v.ids[0]};
     std::vector<Wall> p_walls, e_walls, t_walls;
-    for (int a : path_) {
+    for (int a : *path_) {
       const SP& cut = node(a).cut;
       switch (cut.kind) {
         case SP::Kind::P: p_walls.push_back({c_.plane_poly(cut), {Certificate_type::VV, v, cut}}); break;
@@ -99,7 +93,7 @@ private:
       if (end.kind != SV::Kind::intersection) continue;
       edge_edge(end);
       std::vector<Wall> p_walls;
-      for (int a : path_) {
+      for (int a : *path_) {
         const SP& above = node(a).cut;
         if (above.kind == SP::Kind::P) p_walls.push_back({c_.plane_poly(above), {Certificate_type::IV, end, above}});
         if (above.kind != SP::Kind::E) continue;
@@ -242,24 +236,23 @@ private:
   const typename K::Time& now_;
   const scene::Scene& s_;
   const Point4<P> y_;  // the direction along which P-cuts are stacked
-  std::vector<int> path_;  // the ancestors of the node visited
-  int at_ = -1;            // the node visited
+  const std::vector<int>* path_ = nullptr;  // the ancestors of the node visited, root first
+  int at_ = -1;                             // the node visited
   std::map<SV, Plane4<P>> p_cuts_;
   std::map<std::string, Certificate<P>> made_;
 };
 
-}  // namespace
-
 template <class K>
-std::vector<Certificate<typename K::Poly>> reduced_certificates(const predicates::Classifier<K>& c,
-                                                                const tree::Kvd_tree& t,
-                                                                const typename K::Time& now) {
-  return Reduced<K>(c, t, now).run();
+Reduced_maker<K>::Reduced_maker(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now)
+    : impl_(std::make_unique<Impl>(c, t, now)) {}
+template <class K>
+Reduced_maker<K>::~Reduced_maker() = default;
+template <class K>
+std::vector<Certificate<typename K::Poly>> Reduced_maker<K>::of_node(int n, const std::vector<int>& path) {
+  return impl_->of_node(n, path);
 }
 
-#define KVD_INSTANTIATE_REDUCED(K)                                                                               \
-  template std::vector<Certificate<K::Poly>> reduced_certificates<K>(const predicates::Classifier<K>&, \
-                                                                     const tree::Kvd_tree&, const K::Time&);
-KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_REDUCED)
+#define KVD_INSTANTIATE_REDUCED_MAKER(K) template class Reduced_maker<K>;
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_REDUCED_MAKER)
 
 }  // namespace kvd::kinetic

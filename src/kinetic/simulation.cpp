@@ -11,7 +11,9 @@
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/collision.hpp"
+#include "kvd/kinetic/in_force.hpp"
 #include "kvd/kinetic/local_update.hpp"
+#include "kvd/kinetic/reduced_upkeep.hpp"
 #include "kvd/predicates/classify.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
@@ -67,7 +69,7 @@ public:
     }
     make_certificates();
     sim_.construction_seconds = seconds_since(start);
-    for (const auto& cert : certs_) ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)];
+    in_force_.for_each([&](const auto& cert) { ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)]; });
     std::optional<std::pair<Time, tree::Kvd_tree>> before_last;  // for Validation::end
     for (;;) {
       if (sim_.failures >= o_.max_events || sim_.motion_changes.size() >= o_.max_events) {
@@ -92,8 +94,8 @@ public:
       }
       Batch<Time> batch;
       batch.time = *next;
-      batch.certificates = certs_.size();
-      for (std::size_t id : queue_->first()) batch.failing.push_back({certs_[id].type, certs_[id].nodes});
+      batch.certificates = in_force_.size();
+      for (std::size_t id : queue_->first()) batch.failing.push_back({in_force_[id].type, in_force_[id].nodes});
       std::sort(batch.failing.begin(), batch.failing.end());
       const auto tree_start = std::chrono::steady_clock::now();
       Time at = *next;
@@ -121,7 +123,7 @@ public:
       now_ = std::move(at);
       if (observer_) observer_->batch(batch, false);
       const auto cert_start = std::chrono::steady_clock::now();
-      make_certificates();
+      keep_certificates(batch);
       if constexpr (floating) repair(batch);
       batch.certificate_seconds = seconds_since(cert_start);
       batch.structure = tree::structure_hash(current_);
@@ -157,7 +159,7 @@ private:
   // builds (counted as a failed build).
   std::optional<tree::Kvd_tree> update_locally(Time& at, Batch<Time>& batch) {
     std::set<symbolic::Symbolic_plane> moving;
-    for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, certs_[id]));
+    for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, in_force_[id]));
     tree::Kvd_tree t = current_;
     try {
       const Update_cost cost = local_update(t, tree::Fragment_splitter<K>(*c_, at), moving);
@@ -214,19 +216,52 @@ private:
     return std::nullopt;
   }
 
-  // The certificates of the tree in force, their failure times, the queue.
+  // The certificates of the tree in force made afresh, their failure times,
+  // the queue: at the start, after a motion change, after a repair.
   void make_certificates() {
-    certs_ = full() ? full_certificates(*c_, current_, evaluated_, now_) : reduced_certificates(*c_, current_, now_);
     queue_->reset(current_);
-    for (std::size_t i = 0; i < certs_.size(); ++i) {
+    in_force_.clear();
+    upkeep_.clear();
+    put_in_force({});
+  }
+
+  // After a batch: the reduced set keeps the certificates of the nodes the
+  // batch left alone (Reduced_upkeep); the queue changes where they changed.
+  void keep_certificates(Batch<Time>& batch) {
+    std::set<std::string> failed;
+    for (const Failure& f : batch.failing) failed.insert(f.nodes);
+    queue_->reshape(current_);
+    const auto work = put_in_force(failed);
+    batch.nodes_recomputed = work.nodes;
+    batch.certificates_recomputed = work.certificates;
+  }
+
+  typename Reduced_upkeep<K>::Work put_in_force(const std::set<std::string>& failed) {
+    typename Reduced_upkeep<K>::Work work;
+    std::vector<Certificate<typename K::Poly>> all;
+    std::vector<typename In_force<K>::Offer> offers;
+    if (full()) {
+      all = full_certificates(*c_, current_, evaluated_, now_);
+      work = {current_.statistics().nodes, all.size()};
+      for (const auto& cert : all) offers.push_back({&cert, true});
+    } else {
+      for (const auto& held : upkeep_.update(*c_, current_, now_, failed, work))
+        offers.push_back({held.certificate, held.made});
+    }
+    in_force_.replace(offers, *queue_, [&](const auto& cert) {
       std::optional<Time> first;
-      for (const auto& q : certs_[i].polys) {
+      for (const auto& q : cert.polys) {
         const auto& r = next_root(q);
         if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
       }
-      queue_->set(i, certs_[i].node, std::move(first));
+      return first;
+    });
+    if (observer_) {
+      std::vector<Certificate<typename K::Poly>> certs;
+      in_force_.for_each([&](const auto& cert) { certs.push_back(cert); });
+      observer_->in_force(now_, certs);
     }
-    if (observer_) observer_->in_force(now_, certs_);
+    return work;
   }
 
   // The first sign-changing root of q after now, cached per polynomial.
@@ -297,7 +332,7 @@ private:
     met_.clear();
     std::string features;
     for (std::size_t id : queue_->first()) {
-      const auto& cert = certs_[id];
+      const auto& cert = in_force_[id];
       if (!may_collide(cert.type)) continue;
       const Touch th = touch(scene_, cert.vertices, cert.planes);
       const auto objects = contact_objects(scene_, th);
@@ -381,8 +416,9 @@ private:
     for (;;) {
       const mpq_class r = kinetic::reversal_time(a, c);
       const Time at = k_.time(from_rational<FT>(r));
-      const bool root = std::ranges::any_of(certs_, [&](const auto& cert) {
-        return std::ranges::any_of(cert.polys, [&](const auto& q) { return k_.sign_at(q, at) == 0; });
+      bool root = false;
+      in_force_.for_each([&](const auto& cert) {
+        root = root || std::ranges::any_of(cert.polys, [&](const auto& q) { return k_.sign_at(q, at) == 0; });
       });
       if (!root) return r;
       a = Exact_time(r);
@@ -411,7 +447,8 @@ private:
   std::optional<Time> limit_;
   tree::Kvd_tree current_;
   tree::Evaluated evaluated_;  // by the last build, for the full set
-  std::vector<Certificate<typename K::Poly>> certs_;
+  In_force<K> in_force_;
+  Reduced_upkeep<K> upkeep_;
   std::map<std::vector<FT>, std::optional<Time>> roots_;
   std::string build_error_;  // why the last build threw
   std::vector<std::size_t> met_;  // the objects it found meeting

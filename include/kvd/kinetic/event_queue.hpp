@@ -31,6 +31,9 @@ public:
   virtual void set(std::size_t id, int node, std::optional<Time> time) = 0;
   // Removes every certificate and adopts the shape of `t`.
   virtual void reset(const tree::Kvd_tree& t) = 0;
+  // Adopts the shape of `t` keeping the certificates where they are (a
+  // certificate at a node no longer in t must then be set again).
+  virtual void reshape(const tree::Kvd_tree& t) = 0;
   // The certificates failing first, all at one time (empty when none fails).
   virtual std::vector<std::size_t> first() const = 0;
   virtual std::optional<Time> first_time() const = 0;

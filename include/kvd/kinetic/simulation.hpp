@@ -70,6 +70,8 @@ struct Batch {
   std::string structure;         // the structure hash of the tree just after
   std::size_t moving_sites = 0;   // --update local: the sites the batch moved
   std::size_t nodes_touched = 0;  // --update local: the nodes the update touched
+  std::size_t nodes_recomputed = 0;         // nodes that made their certificates again (all, with the full set)
+  std::size_t certificates_recomputed = 0;  // the certificates they made
   double tree_seconds = 0;         // updating the tree
   double certificate_seconds = 0;  // making the certificates, their failure times and the queue
   std::size_t failures() const { return failing.size(); }

@@ -75,7 +75,7 @@ struct Edge_fragment {
 struct Triangle_fragment {
   std::vector<Symbolic_vertex> corners;
   std::vector<Symbolic_edge> sides;  // sides[i] runs from corners[i] to corners[i+1]
-  bool operator==(const Triangle_fragment&) const = default;
+  auto operator<=>(const Triangle_fragment&) const = default;
 };
 
 // Readable names for traces and test messages: "P(3)", "SV-thread(e4,P2)".

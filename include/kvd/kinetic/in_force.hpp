@@ -1,0 +1,107 @@
+// The certificates in force, under the ids the event queue knows them by. A
+// certificate keeps its id, its failure time and its place in the queue for
+// as long as it stays in force with the same polynomials, so a batch
+// changes the queue only where certificates came, went, changed or moved to
+// another node (and the tree queue repairs only those nodes' paths).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kvd/kinetic/certificate.hpp"
+#include "kvd/kinetic/event_queue.hpp"
+
+namespace kvd::kinetic {
+
+template <class K>
+class In_force {
+public:
+  using Poly = typename K::Poly;
+  using Time = typename K::Time;
+  struct Offer {
+    const Certificate<Poly>* certificate;
+    bool made;  // made at this update; otherwise the same as the one in force under its name
+  };
+
+  // Puts exactly `offers` (distinct names) in force; `fails(c)` is the
+  // failure time of a certificate new in force or with new polynomials.
+  template <class Fails>
+  void replace(const std::vector<Offer>& offers, Event_queue<K>& queue, Fails fails) {
+    std::vector<bool> offered(entries_.size());
+    for (const Offer& o : offers) {
+      const Certificate<Poly>& c = *o.certificate;
+      auto [it, fresh] = ids_.try_emplace(c.nodes);
+      if (fresh) it->second = allocate();
+      const std::size_t id = it->second;
+      if (id >= offered.size()) offered.resize(id + 1);
+      offered[id] = true;
+      Entry& e = entries_[id];
+      if (fresh || (o.made && !same_polys(*e.certificate, c))) {
+        e.certificate = c;
+        e.fails = fails(c);
+      } else if (e.certificate->node != c.node) {
+        e.certificate->node = c.node;
+      } else {
+        continue;
+      }
+      queue.set(id, c.node, e.fails);
+    }
+    for (auto it = ids_.begin(); it != ids_.end();) {
+      const std::size_t id = it->second;
+      if (id < offered.size() && offered[id]) {
+        ++it;
+        continue;
+      }
+      queue.set(id, entries_[id].certificate->node, std::nullopt);
+      entries_[id] = Entry{};
+      free_.push_back(id);
+      it = ids_.erase(it);
+    }
+  }
+
+  // Forgets every certificate (the queue is reset by the caller).
+  void clear() {
+    ids_.clear();
+    entries_.clear();
+    free_.clear();
+  }
+
+  const Certificate<Poly>& operator[](std::size_t id) const { return *entries_[id].certificate; }
+  std::size_t size() const { return ids_.size(); }
+  // By name.
+  template <class F>
+  void for_each(F f) const {
+    for (const auto& [name, id] : ids_) f(*entries_[id].certificate);
+  }
+
+private:
+  struct Entry {
+    std::optional<Certificate<Poly>> certificate;
+    std::optional<Time> fails;
+  };
+
+  std::size_t allocate() {
+    if (free_.empty()) {
+      entries_.emplace_back();
+      return entries_.size() - 1;
+    }
+    const std::size_t id = free_.back();
+    free_.pop_back();
+    return id;
+  }
+
+  static bool same_polys(const Certificate<Poly>& a, const Certificate<Poly>& b) {
+    return std::ranges::equal(a.polys, b.polys,
+                              [](const Poly& p, const Poly& q) { return p.coefficients() == q.coefficients(); });
+  }
+
+  std::map<std::string, std::size_t> ids_;
+  std::vector<Entry> entries_;  // by id; empty when free
+  std::vector<std::size_t> free_;
+};
+
+}  // namespace kvd::kinetic

@@ -1,0 +1,84 @@
+// Keeping the reduced set (thesis 6.4) over a run: after a batch only the
+// nodes whose certificates can have changed make them again (thesis 6.5).
+//
+// What a node's certificates are made from is its key: its cut and
+// fragment, the cuts of its ancestors and the intersection endpoints of its
+// E-node ancestors' fragments (the P-walls those stand for), and the motions
+// (a motion change starts afresh with clear()). A node whose key was in the
+// tree before the batch, and which holds no certificate that failed in the
+// batch, keeps the certificates it had. The others make theirs at the new
+// instant. Keys are compared exactly (no hashing), so a node's key is equal
+// only when the inputs are.
+//
+// The walls a node's certificates name were the nearest when the node made
+// them; a node that keeps its certificates keeps that choice
+// (proofs/certificates.md, section 3). The choice depends on the tree's
+// content only, never on how the update built it, so the local update and
+// the rebuild keep the same certificates.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "kvd/kinetic/certificate.hpp"
+
+namespace kvd::kinetic {
+
+// The reduced certificates one node makes at `now`, its ancestors being
+// `path` (root first); each named once, by name.
+template <class K>
+class Reduced_maker {
+public:
+  Reduced_maker(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now);
+  ~Reduced_maker();
+  std::vector<Certificate<typename K::Poly>> of_node(int n, const std::vector<int>& path);
+
+private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+template <class K>
+class Reduced_upkeep {
+public:
+  using Poly = typename K::Poly;
+  // A certificate in force, and whether its node made it at this update.
+  struct Held {
+    const Certificate<Poly>* certificate;
+    bool made;
+  };
+  struct Work {
+    std::size_t nodes = 0;         // nodes that made their certificates
+    std::size_t certificates = 0;  // certificates they made (before merging equal names)
+  };
+
+  // The reduced set of t just after `now`, each name once (held by the first
+  // node in pre-order that has it), in pre-order; `failed` names the
+  // certificates that failed since the last update. The pointers stay valid
+  // until the next update or clear().
+  std::vector<Held> update(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now,
+                           const std::set<std::string>& failed, Work& work);
+  // Forgets every node's certificates: the next update makes them all.
+  void clear();
+
+private:
+  // An ancestor path as the walls it offers: the parent path, a cut, and the
+  // intersection endpoints of an E-cut's fragment.
+  using Path = std::tuple<int, symbolic::Symbolic_plane, std::vector<symbolic::Symbolic_vertex>>;
+  struct Key {
+    int path;  // the ancestors, as an id of paths_ (-1 at the root)
+    symbolic::Symbolic_plane cut;
+    tree::Fragment fragment;
+    auto operator<=>(const Key&) const = default;
+  };
+  std::map<Key, std::vector<Certificate<Poly>>> nodes_;
+  std::map<Path, int> paths_;
+  int next_path_ = 0;
+};
+
+}  // namespace kvd::kinetic
