@@ -297,6 +297,9 @@ TEST_CASE("local and rebuild updates give the same simulation", "[local][kinetic
       CHECK(Exact_kernel().compare(local.batches[i].time, rebuild.batches[i].time) == 0);
       CHECK(local.batches[i].failing == rebuild.batches[i].failing);
       CHECK(local.batches[i].structure == rebuild.batches[i].structure);
+      // Both keep the certificates of the nodes the batch left alone.
+      CHECK(local.batches[i].certificates == rebuild.batches[i].certificates);
+      CHECK(local.batches[i].certificates_recomputed == rebuild.batches[i].certificates_recomputed);
     }
     CHECK(local.structure_hash == rebuild.structure_hash);
     CHECK(local.collision == rebuild.collision);

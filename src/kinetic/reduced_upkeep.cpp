@@ -6,6 +6,7 @@
 
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/tree/compare.hpp"
 
 namespace kvd::kinetic {
 
@@ -18,6 +19,7 @@ std::vector<symbolic::Symbolic_vertex> intersections(const tree::Node& n) {
   if (const auto* e = std::get_if<tree::Edge_fragment>(&n.fragment))
     for (const auto& end : {e->a, e->b})
       if (end.kind == symbolic::Symbolic_vertex::Kind::intersection) out.push_back(end);
+  std::ranges::sort(out);  // the fragment's ends in either order
   return out;
 }
 
@@ -49,7 +51,7 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     stack.pop_back();
     ancestors.resize(v.depth);
     const tree::Node& n = t.nodes[static_cast<std::size_t>(v.node)];
-    Key key{v.path, n.cut, n.fragment};
+    Key key{v.path, n.cut, tree::canonical(n.fragment)};
     auto kept = nodes_.extract(key);
     const auto [at, first] = nodes.try_emplace(std::move(key));
     // A key met twice has the certificates of its first node, already named.
@@ -65,12 +67,16 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
         if (named.insert(cert.nodes).second) out.push_back({&cert, made});
       }
     }
-    // The path id of the children: the old id when the path was there before.
+    // The path id of the children: the id it had before when it was there
+    // before (another node with the same cut under the same path may have
+    // met it already).
     Path path{v.path, n.cut, intersections(n)};
-    int id;
-    if (auto old = paths_.find(path); old != paths_.end()) id = old->second;
-    else id = next_path_++;
-    paths.emplace(std::move(path), id);
+    auto [known, fresh_path] = paths.try_emplace(std::move(path), 0);
+    if (fresh_path) {
+      const auto old = paths_.find(known->first);
+      known->second = old != paths_.end() ? old->second : next_path_++;
+    }
+    const int id = known->second;
     ancestors.push_back(v.node);
     for (int child : {n.right, n.left})  // left first off the stack
       if (child >= 0) stack.push_back({child, id, v.depth + 1});

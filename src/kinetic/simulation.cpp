@@ -230,6 +230,7 @@ private:
   void keep_certificates(Batch<Time>& batch) {
     std::set<std::string> failed;
     for (const Failure& f : batch.failing) failed.insert(f.nodes);
+    if (o_.upkeep == Upkeep::all) upkeep_.clear();
     queue_->reshape(current_);
     const auto work = put_in_force(failed);
     batch.nodes_recomputed = work.nodes;

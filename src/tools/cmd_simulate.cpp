@@ -18,7 +18,8 @@ const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
     "                    [--kernel exact|double|mpfr:BITS] [--epsilon E]\n"
     "                    [--certificates reduced|full] [--queue tree|heap]\n"
-    "                    [--update local|rebuild] [--collisions reverse|stop]\n"
+    "                    [--update local|rebuild] [--upkeep local|all]\n"
+    "                    [--collisions reverse|stop]\n"
     "                    [--trace FILE] [--list] [--json]\n"
     "\n"
     "Runs the kinetic KVD from the scene's start, until the scene's end, the last event, the\n"
@@ -33,6 +34,10 @@ const char* const simulate_help =
     "  --update U        local (default): the thesis's local update (thesis 7.3),\n"
     "                    which moves only the sites of the failing certificates'\n"
     "                    features; rebuild: the reference, a build just after each batch\n"
+    "  --upkeep U        local (default): after a batch only the nodes whose\n"
+    "                    cut, fragment or ancestors changed, or that hold a failed\n"
+    "                    certificate, make their reduced certificates again; all:\n"
+    "                    every node (the reference)\n"
     "  --collisions C    reverse (default): triangles that meet reverse both\n"
     "                    objects' motions at a rational time just before (thesis\n"
     "                    7.3.3, X-collide) and the run goes on; --events N also\n"
@@ -56,10 +61,12 @@ const char* const simulate_help =
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
-    "           \"nodes_touched\": N}, ...], \"motion_changes\": [{\"time\": EXACT, \"approx\",\n"
+    "           \"nodes_touched\": N, \"nodes_recomputed\": N, \"certificates_recomputed\": N}, ...],\n"
+    "           \"motion_changes\": [{\"time\": EXACT, \"approx\",\n"
     "           \"collision\": EXACT, \"collision_approx\", \"objects\": [ID, ...], \"motions\": [...],\n"
     "           \"batches_before\": N, \"tree_changed\": BOOL, \"contact\": TEXT}, ...], \"update\": U,\n"
     "           \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
+    "           \"certificates_recomputed\": {\"median\", \"nodes_median\", \"total\"},\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
@@ -144,6 +151,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const char* queue = o.queue == kinetic::Queue_kind::tree ? "tree" : "heap";
   const char* update = o.update == kinetic::Update::local ? "local" : "rebuild";
   const Touched touched = nodes_touched(sim);
+  const Recomputed recomputed = certificates_recomputed(sim);
   const std::size_t collisions = sim.motion_changes.size() + (sim.collision ? 1 : 0);
   if (json) {
     std::cout << "{\"kernel\": " << json_string(K::name) << ", \"certificate_set\": " << json_string(set)
@@ -153,7 +161,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
       std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
                 << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failures()
                 << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false")
-                << ", \"nodes_touched\": " << e.nodes_touched << "}";
+                << ", \"nodes_touched\": " << e.nodes_touched << ", \"nodes_recomputed\": " << e.nodes_recomputed
+                << ", \"certificates_recomputed\": " << e.certificates_recomputed << "}";
     }
     std::cout << "], \"motion_changes\": [";
     for (std::size_t i = 0; i < sim.motion_changes.size(); ++i)
@@ -162,6 +171,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << (o.update == kinetic::Update::local ? "{\"median\": " + fixed(touched.median, 1) + ", \"below_10_share\": " +
                                                            fixed(touched.below_10_share, 3) + "}"
                                                      : std::string("null"))
+              << ", \"certificates_recomputed\": {\"median\": " << fixed(recomputed.median, 1)
+              << ", \"nodes_median\": " << fixed(recomputed.nodes_median, 1) << ", \"total\": " << recomputed.total << "}"
               << ", \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
               << ", \"simultaneous_batches\": " << sim.simultaneous_batches
               << ", \"collisions\": " << collisions << ", \"validation_failures\": " << sim.validation_failures
@@ -191,7 +202,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
             const auto& e = sim.batches[i];
             std::cout << "batch " << i + 1 << " at t = " << approx(k.to_double(e.time)) << " (" << k.to_string(e.time)
                       << "): " << e.failures() << " of " << e.certificates << " certificates fail, tree "
-                      << (e.changed ? "changed" : "unchanged") << "\n";
+                      << (e.changed ? "changed" : "unchanged") << ", " << e.certificates_recomputed
+                      << " certificates recomputed\n";
           });
     std::cout << "kernel:        " << K::name << ", " << set << " certificates, " << queue << " queue, " << update
               << " update\n"
@@ -211,6 +223,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                       ? "nodes touched: median " + fixed(touched.median, 1) + " per batch, " +
                             fixed(100 * touched.below_10_share, 1) + "% of batches below 10\n"
                       : std::string())
+              << "recomputed:    median " << fixed(recomputed.median, 1) << " certificates per batch "
+              << "at " << fixed(recomputed.nodes_median, 1) << " nodes, " << recomputed.total << " in all\n"
               << "update shares: tree " << fixed(u.tree_share, 2) << ", certificates " << fixed(u.certificate_share, 2)
               << "\n";
     if (sim.recovery.detected()) std::cout << "recovery:      " << recovery_text(sim.recovery) << "\n";
@@ -260,6 +274,11 @@ int simulate(Args& args) {
       if (v == "local") update = kinetic::Update::local;
       else if (v == "rebuild") update = kinetic::Update::rebuild;
       else throw Usage_error("kvd simulate: --update expects local or rebuild");
+    } else if (a == "--upkeep") {
+      const std::string& v = args.value(a);
+      if (v == "local") o.upkeep = kinetic::Upkeep::local;
+      else if (v == "all") o.upkeep = kinetic::Upkeep::all;
+      else throw Usage_error("kvd simulate: --upkeep expects local or all");
     } else if (a == "--collisions") {
       const std::string& v = args.value(a);
       if (v == "reverse") o.collisions = kinetic::Collisions::reverse;

@@ -72,6 +72,26 @@ Touched nodes_touched(const kinetic::Simulation<Time>& sim) {
   return {median(n), n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size())};
 }
 
+// Certificates made again after each batch (kinetic/reduced_upkeep.hpp).
+struct Recomputed {
+  double median = 0;        // certificates per batch
+  double nodes_median = 0;  // nodes that made them, per batch
+  std::size_t total = 0;
+};
+template <class Time>
+Recomputed certificates_recomputed(const kinetic::Simulation<Time>& sim) {
+  std::vector<double> certs, nodes;
+  Recomputed r;
+  for (const auto& b : sim.batches) {
+    certs.push_back(static_cast<double>(b.certificates_recomputed));
+    nodes.push_back(static_cast<double>(b.nodes_recomputed));
+    r.total += b.certificates_recomputed;
+  }
+  r.median = median(std::move(certs));
+  r.nodes_median = median(std::move(nodes));
+  return r;
+}
+
 // A floating-point run's recovery counts, as a JSON object and in words.
 std::string recovery_json(const kinetic::Recovery& r);
 std::string recovery_text(const kinetic::Recovery& r);

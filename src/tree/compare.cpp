@@ -13,11 +13,10 @@ namespace {
 
 // The fragment's vertices in canonical order.
 std::vector<Symbolic_vertex> canonical_vertices(const Fragment& f) {
-  if (const auto* v = std::get_if<Symbolic_vertex>(&f)) return {*v};
-  if (const auto* e = std::get_if<Edge_fragment>(&f)) return {std::min(e->a, e->b), std::max(e->a, e->b)};
-  std::vector<Symbolic_vertex> c = std::get<Triangle_fragment>(f).corners;
-  std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-  return c;
+  const Fragment c = canonical(f);
+  if (const auto* v = std::get_if<Symbolic_vertex>(&c)) return {*v};
+  if (const auto* e = std::get_if<Edge_fragment>(&c)) return {e->a, e->b};
+  return std::get<Triangle_fragment>(c).corners;
 }
 
 std::string text(const Node& n) {
@@ -32,6 +31,17 @@ std::string text(const Node& n) {
 }
 
 }  // namespace
+
+Fragment canonical(Fragment f) {
+  if (auto* e = std::get_if<Edge_fragment>(&f)) {
+    if (e->b < e->a) std::swap(e->a, e->b);
+  } else if (auto* t = std::get_if<Triangle_fragment>(&f)) {
+    const auto first = std::min_element(t->corners.begin(), t->corners.end()) - t->corners.begin();
+    std::rotate(t->corners.begin(), t->corners.begin() + first, t->corners.end());
+    std::rotate(t->sides.begin(), t->sides.begin() + first, t->sides.end());
+  }
+  return f;
+}
 
 std::string canonical_serialisation(const Kvd_tree& t) {
   // Iterative pre-order: a stack of pending nodes and literal brackets.

@@ -136,6 +136,11 @@ enum class Collisions { reverse, stop };
 // (kinetic/local_update.hpp), or by the reference rebuild.
 enum class Update { local, rebuild };
 
+// Which nodes make their certificates again after a batch: those whose
+// inputs changed or that hold a failed certificate (kinetic/reduced_upkeep.hpp),
+// or every node (the reference). The full set is always made afresh.
+enum class Upkeep { local, all };
+
 struct Options {
   std::size_t max_events = 100;             // stop after the batch holding the N-th failure
   std::optional<mpq_class> until;           // process every batch at a time <= until
@@ -144,6 +149,7 @@ struct Options {
   Queue_kind queue = Queue_kind::tree;
   Update update = Update::local;  // the full set always rebuilds
   Collisions collisions = Collisions::reverse;  // max_events also bounds the motion changes
+  Upkeep upkeep = Upkeep::local;
   // Called after every batch with the number of batches and of failures so far.
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };

@@ -21,6 +21,10 @@
 
 namespace kvd::tree {
 
+// The fragment in canonical form (a triangle fragment's sides rotated with
+// its corners): fragments equal as pieces of a tree are equal here.
+Fragment canonical(Fragment f);
+
 std::string canonical_serialisation(const Kvd_tree& t);
 std::string structure_hash(const Kvd_tree& t);
 // The first difference in pre-order, in words ("at root/+/-: node kinds

@@ -1,0 +1,252 @@
+// Certificate upkeep after a batch (kinetic/reduced_upkeep.hpp,
+// kinetic/in_force.hpp, Event_queue::reshape): which nodes make their
+// certificates again, checked against keys written out here independently
+// of the upkeep's interned ones; the tree queue after reshapes against a
+// queue filled afresh and against the heap; a run keeping certificates
+// against a run making them all after every batch.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <random>
+#include <set>
+
+#include "kernels.hpp"
+#include "kvd/kernel/exact_kernel.hpp"
+#include "kvd/kinetic/event_queue.hpp"
+#include "kvd/kinetic/reduced_upkeep.hpp"
+#include "kvd/kinetic/simulation.hpp"
+#include "kvd/scene/generators.hpp"
+#include "kvd/scene/scene_io.hpp"
+#include "kvd/tree/build.hpp"
+#include "kvd/tree/compare.hpp"
+
+using namespace kvd;
+using SV = symbolic::Symbolic_vertex;
+
+namespace {
+scene::Scene load(const char* name) { return scene::load_scene(std::string(KVD_SOURCE_DIR) + "/data/" + name); }
+
+// What a node's certificates are made from, written out in full: for every
+// ancestor, root first, its cut and (for an E-node) its fragment's
+// intersection endpoints; then the node's cut and fragment (canonical: the
+// local update and a build may start a piece at different corners).
+using Wall_list = std::vector<std::pair<symbolic::Symbolic_plane, std::vector<SV>>>;
+using Explicit_key = std::tuple<Wall_list, symbolic::Symbolic_plane, tree::Fragment>;
+
+struct Node_view {
+  int node;
+  std::vector<int> ancestors;
+  Explicit_key key;
+};
+
+std::vector<Node_view> nodes_of(const tree::Kvd_tree& t) {
+  std::vector<Node_view> out;
+  std::vector<int> ancestors;
+  Wall_list walls;
+  auto walk = [&](auto& self, int n) -> void {
+    const tree::Node& nd = t.nodes[static_cast<std::size_t>(n)];
+    out.push_back({n, ancestors, {walls, nd.cut, tree::canonical(nd.fragment)}});
+    std::vector<SV> ends;
+    if (const auto* e = std::get_if<tree::Edge_fragment>(&nd.fragment))
+      for (const SV& v : {e->a, e->b})
+        if (v.kind == SV::Kind::intersection) ends.push_back(v);
+    std::ranges::sort(ends);
+    ancestors.push_back(n);
+    walls.emplace_back(nd.cut, ends);
+    for (int c : {nd.left, nd.right})
+      if (c >= 0) self(self, c);
+    ancestors.pop_back();
+    walls.pop_back();
+  };
+  if (t.root >= 0) walk(walk, t.root);
+  return out;
+}
+
+template <class K>
+std::set<std::string> names(const std::vector<typename kinetic::Reduced_upkeep<K>::Held>& held) {
+  std::set<std::string> out;
+  for (const auto& h : held) out.insert(h.certificate->nodes);
+  return out;
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is made again at every node holding it",
+                   "[upkeep]", KVD_ALL_KERNELS) {
+  const TestType k;
+  const scene::Scene s = load("random-20.json");
+  const predicates::Classifier<TestType> c(k, s);
+  const auto now = k.time(typename TestType::FT(0));
+  const tree::Kvd_tree t = tree::build(c, now);
+  const std::size_t n = t.statistics().nodes;
+
+  kinetic::Reduced_upkeep<TestType> upkeep;
+  typename kinetic::Reduced_upkeep<TestType>::Work first, again, refail;
+  const auto made = upkeep.update(c, t, now, {}, first);
+  CHECK(first.nodes == n);
+  REQUIRE(made.size() >= 20);
+  for (const auto& h : made) CHECK(h.made);
+  const std::set<std::string> all = names<TestType>(made);
+  std::set<std::string> scratch;
+  for (const auto& cert : kinetic::reduced_certificates(c, t, now)) scratch.insert(cert.nodes);
+  CHECK(all == scratch);
+
+  const auto kept = upkeep.update(c, t, now, {}, again);
+  CHECK(again.nodes == 0);
+  CHECK(again.certificates == 0);
+  CHECK(names<TestType>(kept) == all);
+  for (const auto& h : kept) CHECK(!h.made);
+
+  // Every node whose own certificates include the failed one makes them
+  // again, and no other node.
+  const std::string failed = kept[kept.size() / 2].certificate->nodes;
+  kinetic::Reduced_maker<TestType> maker(c, t, now);
+  std::size_t holders = 0, certificates = 0;
+  for (const auto& v : nodes_of(t)) {
+    const auto certs = maker.of_node(v.node, v.ancestors);
+    if (std::ranges::any_of(certs, [&](const auto& cert) { return cert.nodes == failed; })) {
+      ++holders;
+      certificates += certs.size();
+    }
+  }
+  const auto after = upkeep.update(c, t, now, {failed}, refail);
+  CHECK(holders >= 1);
+  CHECK(refail.nodes == holders);
+  CHECK(refail.certificates == certificates);
+  CHECK(names<TestType>(after) == all);
+  std::size_t made_again = 0;
+  for (const auto& h : after) {
+    made_again += h.made;
+    if (h.certificate->nodes == failed) CHECK(h.made);
+  }
+  CHECK(made_again >= 1);
+  CHECK(made_again <= refail.certificates);
+}
+
+TEST_CASE("after the tree changes, exactly the nodes with a new key make their certificates", "[upkeep]") {
+  const Exact_kernel k;
+  for (const char* name : {"random-20.json", "uniform-density-25.json", "boxes.json", "rotor.json"}) {
+    INFO(name);
+    const scene::Scene s = load(name);
+    const predicates::Classifier<Exact_kernel> c(k, s);
+    kinetic::Reduced_upkeep<Exact_kernel> upkeep;
+    typename kinetic::Reduced_upkeep<Exact_kernel>::Work work;
+    const Exact_time t0(s.start);
+    const tree::Kvd_tree before = tree::build(c, t0);
+    const auto old = upkeep.update(c, before, t0, {}, work);
+    std::map<std::string, std::vector<mpq_class>> polys;  // of the first polynomial, by name
+    for (const auto& h : old) polys[h.certificate->nodes] = h.certificate->polys.front().coefficients();
+    std::set<Explicit_key> keys;
+    for (const auto& v : nodes_of(before)) keys.insert(v.key);
+
+    std::size_t changed_trees = 0;
+    for (int step = 1; step <= 4; ++step) {
+      const Exact_time t1(s.start + mpq_class(step, 2));
+      const tree::Kvd_tree after = tree::build(c, t1);
+      std::size_t fresh = 0;
+      for (const auto& v : nodes_of(after)) fresh += !keys.contains(v.key);
+      typename kinetic::Reduced_upkeep<Exact_kernel>::Work w;
+      upkeep.update(c, after, t1, {}, w);
+      CHECK(w.nodes == fresh);
+      changed_trees += fresh > 0;
+      // The next step compares with this tree.
+      keys.clear();
+      for (const auto& v : nodes_of(after)) keys.insert(v.key);
+    }
+    CHECK(changed_trees >= 1);
+  }
+}
+
+TEST_CASE("the tree queue after reshapes holds what a queue filled afresh and the heap hold", "[upkeep][queue]") {
+  const Exact_kernel k;
+  const scene::Scene s = load("uniform-density-25.json");
+  const predicates::Classifier<Exact_kernel> c(k, s);
+  std::vector<tree::Kvd_tree> trees;
+  for (int i = 0; i < 6; ++i) trees.push_back(tree::build(c, Exact_time(mpq_class(i, 3))));
+  auto reshaped = kinetic::make_queue(k, kinetic::Queue_kind::tree);
+  auto heap = kinetic::make_queue(k, kinetic::Queue_kind::heap);
+  std::mt19937_64 rng(7);
+  std::map<std::size_t, std::pair<int, mpq_class>> held;  // id -> node, time
+  reshaped->reset(trees[0]);
+  heap->reset(trees[0]);
+  std::size_t checks = 0;
+  for (int round = 0; round < 60; ++round) {
+    const tree::Kvd_tree& t = trees[static_cast<std::size_t>(round) % trees.size()];
+    reshaped->reshape(t);
+    heap->reshape(t);
+    std::vector<int> live;
+    for (const auto& v : nodes_of(t)) live.push_back(v.node);
+    // Certificates at nodes no longer in the tree move; some others move,
+    // change time or go; new ones come. Times collide on purpose.
+    for (std::size_t id = 0; id < 80; ++id) {
+      const int what = static_cast<int>(rng() % 6);
+      const bool stale = held.contains(id) && std::ranges::find(live, held[id].first) == live.end();
+      if (what == 0 && held.contains(id) && !stale) {
+        held.erase(id);
+        reshaped->set(id, -1, std::nullopt);
+        heap->set(id, -1, std::nullopt);
+      } else if (what <= 2 || stale || !held.contains(id)) {
+        const int node = live[rng() % live.size()];
+        const mpq_class time(static_cast<long>(rng() % 40), 7);
+        held[id] = {node, time};
+        reshaped->set(id, node, Exact_time(time));
+        heap->set(id, node, Exact_time(time));
+      }
+    }
+    auto fresh = kinetic::make_queue(k, kinetic::Queue_kind::tree);
+    fresh->reset(t);
+    for (const auto& [id, at] : held) fresh->set(id, at.first, Exact_time(at.second));
+    auto sorted = [](std::vector<std::size_t> v) {
+      std::ranges::sort(v);
+      return v;
+    };
+    REQUIRE(fresh->first_time());
+    CHECK(k.compare(*reshaped->first_time(), *fresh->first_time()) == 0);
+    CHECK(k.compare(*heap->first_time(), *fresh->first_time()) == 0);
+    CHECK(sorted(reshaped->first()) == sorted(fresh->first()));
+    CHECK(sorted(heap->first()) == sorted(fresh->first()));
+    ++checks;
+  }
+  CHECK(checks == 60);
+}
+
+TEST_CASE("keeping certificates over batches sees the structural changes of making them all again", "[upkeep][kinetic]") {
+  // The kept certificates name the walls that were nearest when their nodes
+  // made them; the run must still see every change of the tree, at the same
+  // exact times, and recompute far fewer certificates.
+  const Exact_kernel k;
+  std::vector<scene::Scene> scenes;
+  for (const char* name : {"random-20.json", "uniform-density-25.json", "uniform-scale-25.json", "boxes.json",
+                           "rotor.json", "viewpoint.json", "collisions.json"})
+    scenes.push_back(load(name));
+  std::size_t compared = 0, kept_made = 0, all_made = 0;
+  for (const auto& s : scenes) {
+    INFO(s.name);
+    kinetic::Options o;
+    o.max_events = 250;
+    const auto kept = kinetic::simulate(k, s, o);
+    o.upkeep = kinetic::Upkeep::all;
+    const auto all = kinetic::simulate(k, s, o);
+    CHECK(kept.valid());
+    INFO(kept.failure);
+    std::vector<std::pair<std::size_t, std::string>> a, b;  // structural changes, and where
+    for (std::size_t i = 0; i < kept.batches.size(); ++i)
+      if (kept.batches[i].changed) a.emplace_back(i, kept.batches[i].structure);
+    for (std::size_t i = 0; i < all.batches.size(); ++i)
+      if (all.batches[i].changed) b.emplace_back(i, all.batches[i].structure);
+    // The shorter run (max_events counts failures, which differ) is a prefix.
+    const std::size_t common = std::min(a.size(), b.size());
+    for (std::size_t i = 0; i < common; ++i) {
+      CHECK(a[i].second == b[i].second);
+      CHECK(k.compare(kept.batches[a[i].first].time, all.batches[b[i].first].time) == 0);
+    }
+    for (std::size_t i = 0; i < std::min(kept.motion_changes.size(), all.motion_changes.size()); ++i)
+      CHECK(kept.motion_changes[i].time == all.motion_changes[i].time);
+    compared += common;
+    for (const auto& x : kept.batches) kept_made += x.certificates_recomputed;
+    for (const auto& x : all.batches) all_made += x.certificates_recomputed;
+  }
+  WARN(compared << " structural changes compared; certificates made after batches: " << kept_made << " kept, "
+                << all_made << " all");
+  CHECK(compared >= 100);
+  CHECK(2 * kept_made < all_made);
+}
