@@ -4,6 +4,7 @@
 // the nearest ancestor T-cuts along z, on each side. Distances are compared
 // exactly, just after the current time; a tie keeps every tied wall, so the
 // set only grows in degenerate cases. Formulas: proofs/certificates.md.
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
@@ -50,9 +51,13 @@ private:
     std::optional<SP> plane;
     SV other{};
   };
+  // A P-wall (along y) is a cut of the tree or an intersection cut through
+  // an intersection point; E- and T-walls are neither.
   struct Wall {
     Plane4<P> plane;
     Spec spec;
+    std::optional<SP> cut{};
+    std::optional<SV> through{};
   };
 
   const tree::Node& node(int i) const { return t_.nodes[static_cast<std::size_t>(i)]; }
@@ -71,10 +76,10 @@ private:
     for (int a : *path_) {
       const SP& cut = node(a).cut;
       switch (cut.kind) {
-        case SP::Kind::P: p_walls.push_back({c_.plane_poly(cut), {Certificate_type::VV, v, cut}}); break;
+        case SP::Kind::P: p_walls.push_back({c_.plane_poly(cut), {Certificate_type::VV, v, cut}, cut}); break;
         case SP::Kind::E:
           e_walls.push_back({c_.plane_poly(cut), {Certificate_type::VE, v, cut}});
-          for (const SV& s : intersections(a)) p_walls.push_back({p_cut(s), {Certificate_type::IV, s, pv}});
+          for (const SV& s : intersections(a)) p_walls.push_back({p_cut(s), {Certificate_type::IV, s, pv}, {}, s});
           break;
         case SP::Kind::T: t_walls.push_back({c_.plane_poly(cut), {Certificate_type::VT, v, cut}}); break;
       }
@@ -95,13 +100,14 @@ private:
       std::vector<Wall> p_walls;
       for (int a : *path_) {
         const SP& above = node(a).cut;
-        if (above.kind == SP::Kind::P) p_walls.push_back({c_.plane_poly(above), {Certificate_type::IV, end, above}});
+        if (above.kind == SP::Kind::P) p_walls.push_back({c_.plane_poly(above), {Certificate_type::IV, end, above}, above});
         if (above.kind != SP::Kind::E) continue;
-        for (const SV& s : intersections(a)) p_walls.push_back({p_cut(s), {Certificate_type::II, end, std::nullopt, s}});
+        for (const SV& s : intersections(a))
+          p_walls.push_back({p_cut(s), {Certificate_type::II, end, std::nullopt, s}, {}, s});
       }
       const SV& other = end == f.a ? f.b : f.a;
       if (other.kind == SV::Kind::intersection)
-        p_walls.push_back({p_cut(other), {Certificate_type::II, end, std::nullopt, other}});
+        p_walls.push_back({p_cut(other), {Certificate_type::II, end, std::nullopt, other}, {}, other});
       nearest(c_.position(end), y_, p_walls, end_of_walk(y_, p_pencil()));
     }
   }
@@ -210,9 +216,32 @@ private:
           if (cmp * dir < 0) best.assign(1, &h);
           else if (cmp == 0) best.push_back(&h);
         }
-        for (const Hit* h : best) emit(h->wall->spec);
+        for (const Hit* h : best) {
+          emit(h->wall->spec);
+          for (const Hit& other : hits)
+            if (other.side == leg && reached(other) && std::ranges::find(best, &other) == best.end())
+              keep_order(*h->wall, *other.wall);
+        }
         if (!best.empty()) break;
       }
+    }
+  }
+
+  // The nearest P-wall stays the nearest while the farther ones on its side
+  // stay behind it. Between two cuts of the tree that is the tree's own
+  // invariant (the deeper cut on one side of a point is the nearer: its
+  // vertex is certified in its own cell); an intersection cut is no node of
+  // the tree, so its order against the nearest wall is certified here, as
+  // an IV or II certificate between the two walls' points
+  // (proofs/certificates.md, section 3).
+  void keep_order(const Wall& nearest, const Wall& farther) {
+    if (nearest.through && farther.through) {
+      const auto [a, b] = std::minmax(*nearest.through, *farther.through);
+      emit({Certificate_type::II, a, std::nullopt, b});
+    } else if (nearest.through && farther.cut) {
+      emit({Certificate_type::IV, *nearest.through, *farther.cut});
+    } else if (nearest.cut && farther.through) {
+      emit({Certificate_type::IV, *farther.through, *nearest.cut});
     }
   }
 
