@@ -8,6 +8,7 @@
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kinetic/local_update.hpp"
 #include "kvd/kinetic/simulation.hpp"
+#include "kvd/scene/generators.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
@@ -31,11 +32,11 @@ std::pair<tree::Kvd_tree, std::size_t> moved(const predicates::Classifier<K>& c,
 // A thesis figure on a hand-built scene: the tree at `from`, and the local
 // update of the batch failing at `at` (the sites of every certificate in
 // force at `from` failing then), which must give the tree a build gives just
-// after `at`, a different one.
+// after `at`: a different one, unless `changes` is false.
 struct Figure {
   tree::Kvd_tree before, after;
 };
-Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at) {
+Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at, bool changes = true) {
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);
   Figure f{tree::build(c, Exact_time(from)), {}};
@@ -47,8 +48,35 @@ Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at)
   REQUIRE(!moving.empty());
   f.after = moved(c, f.before, Exact_time(at), moving).first;
   CHECK(!tree::first_difference(f.after, tree::build(c, Exact_time(at))));
-  CHECK(tree::first_difference(f.after, f.before));
+  CHECK(tree::first_difference(f.after, f.before).has_value() == changes);
   return f;
+}
+
+// The subtree of t below the first node in pre-order cut by `cut`, written
+// out as Kvd_tree::describe writes a tree.
+std::string below(tree::Kvd_tree t, const SP& cut) {
+  std::vector<int> stack{t.root};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    const tree::Node& nd = t.nodes[static_cast<std::size_t>(n)];
+    if (nd.cut == cut) {
+      t.root = n;
+      return t.describe();
+    }
+    for (int c : {nd.right, nd.left})
+      if (c >= 0) stack.push_back(c);
+  }
+  return "";
+}
+
+// A small generated scene: `uniform-density` with n triangles (the same
+// bytes on every platform for a seed).
+scene::Scene generated(std::size_t n, std::uint64_t seed) {
+  scene::Uniform_params p;
+  p.triangles = n;
+  p.seed = seed;
+  return scene::read_scene(scene::write_scene(scene::uniform_density(p)), "generated");
 }
 
 kinetic::Simulation<Exact_time> run(const scene::Scene& s, kinetic::Update u, std::size_t events) {
@@ -304,4 +332,86 @@ TEST_CASE("local and rebuild updates give the same simulation", "[local][kinetic
     CHECK(local.structure_hash == rebuild.structure_hash);
     CHECK(local.collision == rebuild.collision);
   }
+}
+
+TEST_CASE("an intersection event without an edge event (thesis Fig. 7.9): II fails, the tree stays", "[local]") {
+  // Three triangles. In the cell of v3, e3 ends at its intersection with
+  // E(7) and e5 at its intersection with E(8); the two points pass the same
+  // height (an II certificate) while neither edge crosses a cut, so only
+  // certificates change.
+  const scene::Scene s = generated(3, 9);
+  const auto sim = run(s, kinetic::Update::local, 8);
+  REQUIRE(sim.batches.size() >= 5);
+  const auto& b = sim.batches[4];
+  CHECK(b.failing == std::vector<kinetic::Failure>{{kinetic::Certificate_type::II, "SV(e5,E8) P(SV(e3,E7))"}});
+  CHECK(!b.changed);
+  REQUIRE(b.time.is_rational());
+  CHECK(b.time.rational() == test::q(326398995532, 81551288405));
+  const Figure f = figure(s, kinetic::rational_between(sim.batches[3].time, b.time), b.time.rational(), false);
+  const std::string cell = R"(P(3) [SV(v3)]
+  - E(3) [SV(v3) SV(e3,E7) SE(e3)]
+    + E(5) [SV(e5,E8) SV(v3) SE(e5)]
+      + T(1) [SV(v3) SE(e3), SV(e3,E7) SE(E7,T1), SV(v8,T1) SE(E8,T1), SV(e5,E8) SE(e5)]
+)";
+  CHECK(below(f.before, SP{SP::Kind::P, 3}) == cell);
+  CHECK(below(f.after, SP{SP::Kind::P, 3}) == cell);
+}
+
+TEST_CASE("edge events detected by II certificates (thesis Fig. 7.11): an edge passing an edge node", "[local]") {
+  // Five triangles. Edge e11 passes the vertical line where the E-planes of
+  // e3 and e12 meet: its intersections with E(3) and E(12) and e12's with
+  // E(3) reach one height (four II certificates at once), and the piece of
+  // e11 between E(12) and E(3) moves to E(3)'s other side.
+  const scene::Scene s = generated(5, 43);
+  const auto sim = run(s, kinetic::Update::local, 8);
+  REQUIRE(sim.batches.size() >= 5);
+  const auto& b = sim.batches[4];
+  using T = kinetic::Certificate_type;
+  CHECK(b.failing == std::vector<kinetic::Failure>{{T::II, "SV(e11,E12) P(SV(e11,E3))"},
+                                                   {T::II, "SV(e11,E12) P(SV(e12,E3))"},
+                                                   {T::II, "SV(e11,E3) P(SV(e11,E12))"},
+                                                   {T::II, "SV(e11,E3) P(SV(e12,E3))"}});
+  CHECK(b.changed);
+  REQUIRE(b.time.is_rational());
+  CHECK(b.time.rational() == test::q(2224886, 11466781));
+  const Figure f = figure(s, kinetic::rational_between(sim.batches[3].time, b.time), b.time.rational());
+  // Before: e11's piece from E(12) to E(3) is on E(3)'s negative side, in
+  // the cell below e12's piece that ends at E(3).
+  CHECK(below(f.before, SP{SP::Kind::E, 3}) == R"(E(3) [SV(v3) SV(v4) SE(e3)]
+  - E(5) [SV(e5,P4) SV(v3) SE(e5)]
+    - T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]
+      + E(12) [SV(e12,P4) SV(e12,E3) SE(e12)]
+        - E(11) [SV(e11,E12) SV(e11,E3) SE(e11)]
+          - T(3) [SV(v4,T3) SE(P4,T3), SV(P4,E12,T3) SE(E12,T3), SV(e11,E12) SE(e11), SV(e11,E3) SE(E3,T3)]
+        + T(4) [SV(e12,P4) SE(e12), SV(e12,E3) SE(E3,T4), SV(v3,T4) SE(E5,T4), SV(P4,E5,T4) SE(P4,T4)]
+          - E(11) [SV(e11,P4) SV(e11,E12) SE(e11)]
+            - T(3) [SV(P4,E12,T3) SE(P4,T3), SV(e11,P4) SE(e11), SV(e11,E12) SE(E12,T3)]
+    + E(14) [SV(e14,P3) SV(e14,P4) SE(e14)]
+      + T(4) [SV(v3,T4) SE(P3,T4), SV(e14,P3) SE(e14), SV(e14,P4) SE(P4,T4), SV(P4,E5,T4) SE(E5,T4)]
+  + E(12) [SV(e12,E3) SV(e12,P3) SE(e12)]
+    - E(9) [SV(e9,P3) SV(e9,P4) SE(e9)]
+      - E(11) [SV(e11,E3) SV(e11,P3) SE(e11)]
+        - T(3) [SV(e9,P3) SE(e9), SV(e9,P4) SE(P4,T3), SV(v4,T3) SE(E3,T3), SV(e11,E3) SE(e11), SV(e11,P3) SE(P3,T3)]
+    + T(4) [SV(e12,E3) SE(e12), SV(e12,P3) SE(P3,T4), SV(v3,T4) SE(E3,T4)]
+)");
+  // After: the piece of e11 from E(12) to E(3) is on E(3)'s other side,
+  // below e12's piece there, ending at E(3) before E(12).
+  CHECK(below(f.after, SP{SP::Kind::E, 3}) == R"(E(3) [SV(v3) SV(v4) SE(e3)]
+  - E(5) [SV(e5,P4) SV(v3) SE(e5)]
+    - T(1) [SV(v3) SE(e3), SV(v4) SE(P4,T1), SV(e5,P4) SE(e5)]
+      + E(12) [SV(e12,P4) SV(e12,E3) SE(e12)]
+        - T(3) [SV(v4,T3) SE(P4,T3), SV(P4,E12,T3) SE(E12,T3), SV(E3,E12,T3) SE(E3,T3)]
+        + T(4) [SV(e12,P4) SE(e12), SV(e12,E3) SE(E3,T4), SV(v3,T4) SE(E5,T4), SV(P4,E5,T4) SE(P4,T4)]
+          - E(11) [SV(e11,P4) SV(e11,E3) SE(e11)]
+            - T(3) [SV(P4,E12,T3) SE(P4,T3), SV(e11,P4) SE(e11), SV(e11,E3) SE(E3,T3), SV(E3,E12,T3) SE(E12,T3)]
+    + E(14) [SV(e14,P3) SV(e14,P4) SE(e14)]
+      + T(4) [SV(v3,T4) SE(P3,T4), SV(e14,P3) SE(e14), SV(e14,P4) SE(P4,T4), SV(P4,E5,T4) SE(E5,T4)]
+  + E(12) [SV(e12,E3) SV(e12,P3) SE(e12)]
+    - E(9) [SV(e9,P3) SV(e9,P4) SE(e9)]
+      - E(11) [SV(e11,E12) SV(e11,P3) SE(e11)]
+        - T(3) [SV(e9,P3) SE(e9), SV(e9,P4) SE(P4,T3), SV(v4,T3) SE(E3,T3), SV(E3,E12,T3) SE(E12,T3), SV(e11,E12) SE(e11), SV(e11,P3) SE(P3,T3)]
+    + T(4) [SV(e12,E3) SE(e12), SV(e12,P3) SE(P3,T4), SV(v3,T4) SE(E3,T4)]
+      - E(11) [SV(e11,E3) SV(e11,E12) SE(e11)]
+        - T(3) [SV(E3,E12,T3) SE(E3,T3), SV(e11,E3) SE(e11), SV(e11,E12) SE(E12,T3)]
+)");
 }

@@ -10,7 +10,10 @@
 //    its cell: VV, VE, VT for a P-node's vertex, IV and II for the
 //    intersection points held by E-node fragments, ET and VE for an E-node's
 //    intersection and thread endpoints, TT (a VT certificate) for the
-//    P-cuts crossing a T-node's fragment. Polynomials and their derivation:
+//    P-cuts crossing a T-node's fragment; and IV or II between each nearest
+//    P-wall and the intersection cuts farther on its side, which keeps the
+//    choice of wall right while a node keeps its certificates
+//    (kinetic/reduced_upkeep.hpp). Polynomials and their derivation:
 //    proofs/certificates.md.
 #pragma once
 
@@ -55,7 +58,8 @@ std::vector<Certificate<typename K::Poly>> full_certificates(const predicates::C
                                                              const tree::Kvd_tree& t, tree::Evaluated evaluated,
                                                              const typename K::Time& now);
 
-// The reduced set of the tree in force just after `now`.
+// The reduced set of the tree in force just after `now`, every node making
+// its certificates (Reduced_upkeep keeps them over a run).
 template <class K>
 std::vector<Certificate<typename K::Poly>> reduced_certificates(const predicates::Classifier<K>& c,
                                                                 const tree::Kvd_tree& t,
