@@ -30,15 +30,21 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
                                                                         const tree::Kvd_tree& t,
                                                                         const typename K::Time& now,
                                                                         const std::set<std::string>& failed, Work& work) {
-  Reduced_maker<K> maker(c, t, now);
-  std::map<Key, std::vector<Certificate<Poly>>> nodes;
-  std::map<Path, int> paths;
-  std::vector<Held> out;
-  std::unordered_set<std::string_view> named;
   const auto holds_failed = [&](const std::vector<Certificate<Poly>>& certs) {
-    return std::ranges::any_of(certs, [&](const auto& cert) { return failed.contains(cert.nodes); });
+    return !failed.empty() &&
+           std::ranges::any_of(certs, [&](const auto& cert) { return failed.contains(cert.nodes); });
   };
-  // Pre-order, with the ancestors of each node and the id of their path.
+  records_.resize(std::max(records_.size(), t.nodes.size()));
+  // 1. Pre-order: the nodes whose slot holds their key keep their record;
+  // the others are pending, with their key and ancestors.
+  struct Pending {
+    int node;
+    Key key;
+    std::vector<int> ancestors;
+  };
+  std::vector<Pending> pending;
+  std::vector<int> order;  // pre-order
+  std::vector<bool> in_place(records_.size());
   struct Visit {
     int node, path;
     std::size_t depth;
@@ -50,45 +56,81 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     const Visit v = stack.back();
     stack.pop_back();
     ancestors.resize(v.depth);
-    const tree::Node& n = t.nodes[static_cast<std::size_t>(v.node)];
-    Key key{v.path, n.cut, tree::canonical(n.fragment)};
-    auto kept = nodes_.extract(key);
-    const auto [at, first] = nodes.try_emplace(std::move(key));
-    // A key met twice has the certificates of its first node, already named.
-    if (first) {
-      const bool made = kept.empty() || holds_failed(kept.mapped());
-      at->second = made ? maker.of_node(v.node, ancestors) : std::move(kept.mapped());
-      if (made) {
-        ++work.nodes;
-        work.certificates += at->second.size();
-      }
-      for (auto& cert : at->second) {
-        cert.node = v.node;
-        if (named.insert(cert.nodes).second) out.push_back({&cert, made});
-      }
+    order.push_back(v.node);
+    const auto slot = static_cast<std::size_t>(v.node);
+    const tree::Node& n = t.nodes[slot];
+    Record& r = records_[slot];
+    int children;
+    if (r.used && r.key.path == v.path && r.key.cut == n.cut &&
+        (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(r.certificates)) {
+      in_place[slot] = true;
+      children = r.children_path;
+    } else {
+      pending.push_back({v.node, Key{v.path, n.cut, tree::canonical(n.fragment)}, ancestors});
+      const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersections(n)}, next_path_);
+      next_path_ += fresh;
+      children = known->second;
     }
-    // The path id of the children: the id it had before when it was there
-    // before (another node with the same cut under the same path may have
-    // met it already).
-    Path path{v.path, n.cut, intersections(n)};
-    auto [known, fresh_path] = paths.try_emplace(std::move(path), 0);
-    if (fresh_path) {
-      const auto old = paths_.find(known->first);
-      known->second = old != paths_.end() ? old->second : next_path_++;
-    }
-    const int id = known->second;
     ancestors.push_back(v.node);
     for (int child : {n.right, n.left})  // left first off the stack
-      if (child >= 0) stack.push_back({child, id, v.depth + 1});
+      if (child >= 0) stack.push_back({child, children, v.depth + 1});
   }
-  nodes_ = std::move(nodes);
-  paths_ = std::move(paths);
+  // 2. A pending key held before by another slot that is not kept in place
+  // (the rebuild renumbers every node) keeps that slot's certificates;
+  // the other pending nodes make theirs. Records are written afterwards:
+  // a slot may give its certificates to a node of another slot.
+  Reduced_maker<K> maker(c, t, now);
+  std::vector<std::vector<Certificate<Poly>>> certs(pending.size());
+  std::vector<bool> made(pending.size());
+  std::vector<bool> given(records_.size());
+  for (std::size_t p = 0; p < pending.size(); ++p) {
+    const auto old = where_.find(pending[p].key);
+    const auto from = old == where_.end() ? records_.size() : static_cast<std::size_t>(old->second);
+    if (from < records_.size() && !in_place[from] && !given[from] && !holds_failed(records_[from].certificates)) {
+      given[from] = true;
+      certs[p] = std::move(records_[from].certificates);
+    } else {
+      made[p] = true;
+      certs[p] = maker.of_node(pending[p].node, pending[p].ancestors);
+      ++work.nodes;
+      work.certificates += certs[p].size();
+    }
+  }
+  // 3. The records of the tree just after.
+  for (std::size_t slot = 0; slot < records_.size(); ++slot) {
+    Record& r = records_[slot];
+    if (in_place[slot] || !r.used) continue;
+    if (const auto it = where_.find(r.key); it != where_.end() && it->second == static_cast<int>(slot)) where_.erase(it);
+    r = Record{};
+  }
+  std::vector<bool> fresh(records_.size());
+  for (std::size_t p = 0; p < pending.size(); ++p) {
+    const auto slot = static_cast<std::size_t>(pending[p].node);
+    const tree::Node& n = t.nodes[slot];
+    Record& r = records_[slot];
+    r.used = true;
+    r.fragment = n.fragment;
+    r.children_path = paths_.at(Path{pending[p].key.path, n.cut, intersections(n)});
+    r.certificates = std::move(certs[p]);
+    for (auto& cert : r.certificates) cert.node = pending[p].node;
+    where_.try_emplace(pending[p].key, pending[p].node);  // a key met twice stays with its first node
+    r.key = std::move(pending[p].key);
+    fresh[slot] = made[p];
+  }
+  records_.resize(t.nodes.size());
+  // 4. Each name once, at its first node in pre-order.
+  std::vector<Held> out;
+  std::unordered_set<std::string_view> named;
+  for (int node : order)
+    for (const auto& cert : records_[static_cast<std::size_t>(node)].certificates)
+      if (named.insert(cert.nodes).second) out.push_back({&cert, fresh[static_cast<std::size_t>(node)]});
   return out;
 }
 
 template <class K>
 void Reduced_upkeep<K>::clear() {
-  nodes_.clear();
+  records_.clear();
+  where_.clear();
   paths_.clear();
 }
 

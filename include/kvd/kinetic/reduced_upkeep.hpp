@@ -76,8 +76,19 @@ private:
     tree::Fragment fragment;
     auto operator<=>(const Key&) const = default;
   };
-  std::map<Key, std::vector<Certificate<Poly>>> nodes_;
-  std::map<Path, int> paths_;
+  // What a node slot of the tree held at the last update. A node whose slot
+  // holds its key is matched in place (the local update keeps the slots of
+  // the nodes it does not touch); others are looked up by key (`where_`).
+  struct Record {
+    bool used = false;
+    Key key;
+    tree::Fragment fragment;  // as the tree held it: equal means equal keys
+    int children_path = -1;   // the path id the node gives its children
+    std::vector<Certificate<Poly>> certificates;
+  };
+  std::vector<Record> records_;
+  std::map<Key, int> where_;  // the slot holding each key
+  std::map<Path, int> paths_;  // every path met since the last clear()
   int next_path_ = 0;
 };
 
