@@ -1,8 +1,6 @@
 #include "kvd/kinetic/reduced_upkeep.hpp"
 
 #include <algorithm>
-#include <string_view>
-#include <unordered_set>
 
 #include "kvd/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -26,10 +24,9 @@ std::vector<symbolic::Symbolic_vertex> intersections(const tree::Node& n) {
 }  // namespace
 
 template <class K>
-std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
-                                                                        const tree::Kvd_tree& t,
-                                                                        const typename K::Time& now,
-                                                                        const std::set<std::string>& failed, Work& work) {
+typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
+                                                              const tree::Kvd_tree& t, const typename K::Time& now,
+                                                              const std::set<std::string>& failed, Work& work) {
   const auto holds_failed = [&](const std::vector<Certificate<Poly>>& certs) {
     return !failed.empty() &&
            std::ranges::any_of(certs, [&](const auto& cert) { return failed.contains(cert.nodes); });
@@ -43,7 +40,6 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     std::vector<int> ancestors;
   };
   std::vector<Pending> pending;
-  std::vector<int> order;  // pre-order
   std::vector<bool> in_place(records_.size());
   struct Visit {
     int node, path;
@@ -56,12 +52,11 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     const Visit v = stack.back();
     stack.pop_back();
     ancestors.resize(v.depth);
-    order.push_back(v.node);
     const auto slot = static_cast<std::size_t>(v.node);
     const tree::Node& n = t.nodes[slot];
     Record& r = records_[slot];
     int children;
-    if (r.used && r.key.path == v.path && r.key.cut == n.cut &&
+    if (!remake_ && r.used && r.key.path == v.path && r.key.cut == n.cut &&
         (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(r.certificates)) {
       in_place[slot] = true;
       children = r.children_path;
@@ -75,6 +70,17 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     for (int child : {n.right, n.left})  // left first off the stack
       if (child >= 0) stack.push_back({child, children, v.depth + 1});
   }
+  // The holders of the names that records not kept in place lose (with
+  // each touched name's holder before).
+  std::map<std::string, int> before;
+  const auto touch = [&](const std::string& name) {
+    auto& h = holders_[name];
+    before.try_emplace(name, h.empty() ? -1 : *h.begin());
+    return &h;
+  };
+  for (std::size_t slot = 0; slot < records_.size(); ++slot)
+    if (!in_place[slot] && records_[slot].used)
+      for (const auto& cert : records_[slot].certificates) touch(cert.nodes)->erase(static_cast<int>(slot));
   // 2. A pending key held before by another slot that is not kept in place
   // (the rebuild renumbers every node) keeps that slot's certificates;
   // the other pending nodes make theirs. Records are written afterwards:
@@ -86,7 +92,7 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const auto old = where_.find(pending[p].key);
     const auto from = old == where_.end() ? records_.size() : static_cast<std::size_t>(old->second);
-    if (from < records_.size() && !in_place[from] && !given[from] && !holds_failed(records_[from].certificates)) {
+    if (!remake_ && from < records_.size() && !in_place[from] && !given[from] && !holds_failed(records_[from].certificates)) {
       given[from] = true;
       certs[p] = std::move(records_[from].certificates);
     } else {
@@ -103,7 +109,7 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     if (const auto it = where_.find(r.key); it != where_.end() && it->second == static_cast<int>(slot)) where_.erase(it);
     r = Record{};
   }
-  std::vector<bool> fresh(records_.size());
+  std::vector<bool> rewritten(records_.size()), fresh(records_.size());
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const auto slot = static_cast<std::size_t>(pending[p].node);
     const tree::Node& n = t.nodes[slot];
@@ -112,18 +118,32 @@ std::vector<typename Reduced_upkeep<K>::Held> Reduced_upkeep<K>::update(const pr
     r.fragment = n.fragment;
     r.children_path = paths_.at(Path{pending[p].key.path, n.cut, intersections(n)});
     r.certificates = std::move(certs[p]);
-    for (auto& cert : r.certificates) cert.node = pending[p].node;
+    for (auto& cert : r.certificates) {
+      cert.node = pending[p].node;
+      touch(cert.nodes)->insert(pending[p].node);
+    }
     where_.try_emplace(pending[p].key, pending[p].node);  // a key met twice stays with its first node
     r.key = std::move(pending[p].key);
+    rewritten[slot] = true;
     fresh[slot] = made[p];
   }
   records_.resize(t.nodes.size());
-  // 4. Each name once, at its first node in pre-order.
-  std::vector<Held> out;
-  std::unordered_set<std::string_view> named;
-  for (int node : order)
-    for (const auto& cert : records_[static_cast<std::size_t>(node)].certificates)
-      if (named.insert(cert.nodes).second) out.push_back({&cert, fresh[static_cast<std::size_t>(node)]});
+  remake_ = false;
+  // 4. What changed in force: a name whose holder is new or rewritten.
+  Changes out;
+  for (const auto& [name, old] : before) {
+    const auto it = holders_.find(name);
+    if (it->second.empty()) {
+      if (old >= 0) out.gone.push_back(name);
+      holders_.erase(it);
+      continue;
+    }
+    const int holder = *it->second.begin();
+    const auto slot = static_cast<std::size_t>(holder);
+    if (holder == old && !rewritten[slot]) continue;
+    for (const auto& cert : records_[slot].certificates)
+      if (cert.nodes == name) out.changed.push_back({&cert, fresh[slot]});
+  }
   return out;
 }
 
@@ -131,6 +151,7 @@ template <class K>
 void Reduced_upkeep<K>::clear() {
   records_.clear();
   where_.clear();
+  holders_.clear();
   paths_.clear();
 }
 
@@ -141,7 +162,7 @@ std::vector<Certificate<typename K::Poly>> reduced_certificates(const predicates
   Reduced_upkeep<K> upkeep;
   typename Reduced_upkeep<K>::Work work;
   std::vector<Certificate<typename K::Poly>> out;
-  for (const auto& held : upkeep.update(c, t, now, {}, work)) out.push_back(*held.certificate);
+  for (const auto& held : upkeep.update(c, t, now, {}, work).changed) out.push_back(*held.certificate);
   return out;
 }
 

@@ -230,7 +230,7 @@ private:
   void keep_certificates(Batch<Time>& batch) {
     std::set<std::string> failed;
     for (const Failure& f : batch.failing) failed.insert(f.nodes);
-    if (o_.upkeep == Upkeep::all) upkeep_.clear();
+    if (o_.upkeep == Upkeep::all) upkeep_.remake_all();
     queue_->reshape(current_);
     const auto work = put_in_force(failed);
     batch.nodes_recomputed = work.nodes;
@@ -238,25 +238,26 @@ private:
   }
 
   typename Reduced_upkeep<K>::Work put_in_force(const std::set<std::string>& failed) {
-    typename Reduced_upkeep<K>::Work work;
-    std::vector<Certificate<typename K::Poly>> all;
-    std::vector<typename In_force<K>::Offer> offers;
-    if (full()) {
-      all = full_certificates(*c_, current_, evaluated_, now_);
-      work = {current_.statistics().nodes, all.size()};
-      for (const auto& cert : all) offers.push_back({&cert, true});
-    } else {
-      for (const auto& held : upkeep_.update(*c_, current_, now_, failed, work))
-        offers.push_back({held.certificate, held.made});
-    }
-    in_force_.replace(offers, *queue_, [&](const auto& cert) {
+    const auto fails = [&](const auto& cert) {
       std::optional<Time> first;
       for (const auto& q : cert.polys) {
         const auto& r = next_root(q);
         if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
       }
       return first;
-    });
+    };
+    typename Reduced_upkeep<K>::Work work;
+    std::vector<typename In_force<K>::Offer> offers;
+    if (full()) {
+      const auto all = full_certificates(*c_, current_, evaluated_, now_);
+      work = {current_.statistics().nodes, all.size()};
+      for (const auto& cert : all) offers.push_back({&cert, true});
+      in_force_.replace(offers, *queue_, fails);
+    } else {
+      const auto changes = upkeep_.update(*c_, current_, now_, failed, work);
+      for (const auto& held : changes.changed) offers.push_back({held.certificate, held.made});
+      in_force_.apply(changes.gone, offers, *queue_, fails);
+    }
     if (observer_) {
       std::vector<Certificate<typename K::Poly>> certs;
       in_force_.for_each([&](const auto& cert) { certs.push_back(cert); });

@@ -9,7 +9,9 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kvd/kinetic/certificate.hpp"
@@ -31,14 +33,32 @@ public:
   // failure time of a certificate new in force or with new polynomials.
   template <class Fails>
   void replace(const std::vector<Offer>& offers, Event_queue<K>& queue, Fails fails) {
-    std::vector<bool> offered(entries_.size());
-    for (const Offer& o : offers) {
+    std::set<std::string_view> offered;
+    for (const Offer& o : offers) offered.insert(o.certificate->nodes);
+    std::vector<std::string> gone;
+    for (const auto& [name, id] : ids_)
+      if (!offered.contains(name)) gone.push_back(name);
+    apply(gone, offers, queue, fails);
+  }
+
+  // Takes the names `gone` out of force and puts `changed` (distinct names)
+  // in force, keeping everything else.
+  template <class Fails>
+  void apply(const std::vector<std::string>& gone, const std::vector<Offer>& changed, Event_queue<K>& queue,
+             Fails fails) {
+    for (const std::string& name : gone) {
+      const auto it = ids_.find(name);
+      const std::size_t id = it->second;
+      queue.set(id, entries_[id].certificate->node, std::nullopt);
+      entries_[id] = Entry{};
+      free_.push_back(id);
+      ids_.erase(it);
+    }
+    for (const Offer& o : changed) {
       const Certificate<Poly>& c = *o.certificate;
       auto [it, fresh] = ids_.try_emplace(c.nodes);
       if (fresh) it->second = allocate();
       const std::size_t id = it->second;
-      if (id >= offered.size()) offered.resize(id + 1);
-      offered[id] = true;
       Entry& e = entries_[id];
       if (fresh || (o.made && !same_polys(*e.certificate, c))) {
         e.certificate = c;
@@ -49,17 +69,6 @@ public:
         continue;
       }
       queue.set(id, c.node, e.fails);
-    }
-    for (auto it = ids_.begin(); it != ids_.end();) {
-      const std::size_t id = it->second;
-      if (id < offered.size() && offered[id]) {
-        ++it;
-        continue;
-      }
-      queue.set(id, entries_[id].certificate->node, std::nullopt);
-      entries_[id] = Entry{};
-      free_.push_back(id);
-      it = ids_.erase(it);
     }
   }
 

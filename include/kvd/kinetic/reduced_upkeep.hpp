@@ -57,14 +57,25 @@ public:
     std::size_t certificates = 0;  // certificates they made (before merging equal names)
   };
 
-  // The reduced set of t just after `now`, each name once (held by the first
-  // node in pre-order that has it), in pre-order; `failed` names the
-  // certificates that failed since the last update. The pointers stay valid
-  // until the next update or clear().
-  std::vector<Held> update(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now,
-                           const std::set<std::string>& failed, Work& work);
-  // Forgets every node's certificates: the next update makes them all.
+  // How the set in force changed: the names no longer in force, and the
+  // certificates new in force, made again, or held by another node now.
+  struct Changes {
+    std::vector<std::string> gone;
+    std::vector<Held> changed;
+  };
+
+  // Brings the reduced set up to date with t just after `now`; `failed`
+  // names the certificates that failed since the last update. Each name is
+  // in force once, held by the least node slot that has it. The pointers
+  // stay valid until the next update or clear().
+  Changes update(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now,
+                 const std::set<std::string>& failed, Work& work);
+  // Forgets every node's certificates and what is in force: the next update
+  // makes them all, and reports them all as changed.
   void clear();
+  // The next update makes every node's certificates again, and reports
+  // only what changed in force (Upkeep::all, the reference).
+  void remake_all() { remake_ = true; }
 
 private:
   // An ancestor path as the walls it offers: the parent path, a cut, and the
@@ -88,8 +99,10 @@ private:
   };
   std::vector<Record> records_;
   std::map<Key, int> where_;  // the slot holding each key
+  std::map<std::string, std::set<int>> holders_;  // the slots holding each name
   std::map<Path, int> paths_;  // every path met since the last clear()
   int next_path_ = 0;
+  bool remake_ = false;
 };
 
 }  // namespace kvd::kinetic
