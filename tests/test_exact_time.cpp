@@ -115,3 +115,29 @@ TEST_CASE("a detached copy does not share refinement", "[exact]") {
   CHECK(a[1].upper() - a[1].lower() < width);
   CHECK(k.compare(copy, a[1]) == 0);
 }
+
+TEST_CASE("an algebraic value prints the same however far comparisons refined it", "[exact]") {
+  // sqrt(2) next to sqrt(2) + 1/1000: roots of (t^2 - 2)((t - 1/1000)^2 - 2),
+  // scaled to integers.
+  const kvd::zpoly::ZPoly p = {mpz_class(-2), 0, 1};
+  const kvd::zpoly::ZPoly shifted = {mpz_class(1 - 2000000), -2000, 1000000};
+  kvd::zpoly::ZPoly product(p.size() + shifted.size() - 1);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < shifted.size(); ++j) product[i + j] += p[i] * shifted[j];
+  const kvd::Exact_time a = kvd::Exact_time::algebraic(product, kvd::test::q(1413, 1000), kvd::test::q(14145, 10000));
+  const kvd::Exact_time b = a.detached();
+  for (int i = 0; i < 40; ++i) b.refine();
+  CHECK(a.to_string() == b.to_string());
+  const auto [lo, hi] = a.canonical_interval();
+  // Dyadic, narrower than the gap to the other root, isolating, around the value.
+  const mpq_class width = hi - lo;
+  CHECK(width.get_num() == 1);
+  CHECK((width.get_den() & (width.get_den() - 1)) == 0);
+  CHECK(width < kvd::test::q(1, 1000));
+  CHECK(kvd::zpoly::descartes_bound(product, lo, hi) == 1);
+  CHECK(a.compare_refining(lo) == 1);
+  CHECK(a.compare_refining(hi) == -1);
+  CHECK(a.to_string() == "root of [" + product[0].get_str() + ", " + product[1].get_str() + ", " + product[2].get_str() +
+                             ", " + product[3].get_str() + ", " + product[4].get_str() + "] in (" + lo.get_str() + ", " +
+                             hi.get_str() + ")");
+}

@@ -117,12 +117,36 @@ double Exact_time::to_double() const {
   }
 }
 
+std::pair<mpq_class, mpq_class> Exact_time::canonical_interval() const {
+  for (mpz_class scale = 1;; scale *= 2) {
+    // The cell of width 1/scale holding the value: refine until (lo, hi)
+    // lies in one cell (a value on a cell's end becomes rational).
+    mpz_class m;
+    for (;;) {
+      if (rep_->rational) return {rep_->lo, rep_->lo};
+      const mpq_class lo = rep_->lo * scale;
+      mpz_fdiv_q(m.get_mpz_t(), lo.get_num_mpz_t(), lo.get_den_mpz_t());
+      mpq_class end(m + 1, scale);
+      end.canonicalize();
+      if (rep_->hi <= end) break;
+      compare_refining(end);
+    }
+    mpq_class a(m, scale), b(m + 1, scale);
+    a.canonicalize();
+    b.canonicalize();
+    if (zpoly::sign_at(rep_->p, a) != 0 && zpoly::sign_at(rep_->p, b) != 0 && zpoly::descartes_bound(rep_->p, a, b) == 1)
+      return {a, b};
+  }
+}
+
 std::string Exact_time::to_string() const {
+  if (rep_->rational) return rep_->lo.get_str();
+  const auto [lo, hi] = canonical_interval();
   if (rep_->rational) return rep_->lo.get_str();
   std::ostringstream os;
   os << "root of [";
   for (std::size_t i = 0; i < rep_->p.size(); ++i) os << (i ? ", " : "") << rep_->p[i].get_str();
-  os << "] in (" << rep_->lo.get_str() << ", " << rep_->hi.get_str() << ")";
+  os << "] in (" << lo.get_str() << ", " << hi.get_str() << ")";
   return os.str();
 }
 

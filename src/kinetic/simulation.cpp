@@ -93,10 +93,14 @@ public:
         }
       }
       Batch<Time> batch;
-      batch.time = *next;
       batch.certificates = in_force_.size();
-      for (std::size_t id : queue_->first()) batch.failing.push_back({in_force_[id].type, in_force_[id].nodes});
-      std::sort(batch.failing.begin(), batch.failing.end());
+      std::vector<std::size_t> first = queue_->first();
+      const auto name = [&](std::size_t id) { return Failure{in_force_[id].type, in_force_[id].nodes}; };
+      std::ranges::sort(first, {}, name);
+      for (std::size_t id : first) batch.failing.push_back(name(id));
+      // The time as the first failing certificate gives it: its polynomial,
+      // not whichever the queue met first (the text of a trace).
+      batch.time = *in_force_.fails(first.front());
       const auto tree_start = std::chrono::steady_clock::now();
       Time at = *next;
       std::optional<tree::Kvd_tree> after;

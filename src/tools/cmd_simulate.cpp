@@ -77,9 +77,11 @@ const char* const simulate_help =
     "\n"
     "Exit status: 0 on success, 1 on a failed validation, 2 on bad input.\n";
 
-// The isolating interval of an exact time; a floating-point time is its own.
+// The canonical isolating interval of an exact time; a floating-point time
+// is its own.
 std::pair<std::string, std::string> interval(const Exact_kernel&, const Exact_time& t) {
-  return {t.lower().get_str(), t.upper().get_str()};
+  const auto [lo, hi] = t.canonical_interval();
+  return {lo.get_str(), hi.get_str()};
 }
 template <class K>
 std::pair<std::string, std::string> interval(const K& k, const typename K::Time& t) {

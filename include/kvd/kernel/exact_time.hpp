@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "kvd/kernel/zpoly.hpp"
 
@@ -42,7 +43,15 @@ public:
   Exact_time detached() const;
 
   double to_double() const;
-  // "7/3" for a rational, "root of [c0, c1, ...] in (lo, hi)" otherwise.
+  // An isolating interval that depends on the value and its polynomial
+  // only, not on how far comparisons have refined it: the dyadic interval
+  // [m/2^k, (m+1)/2^k] holding the root, for the least k >= 0 at which
+  // Descartes' rule counts exactly one root of p in it and p vanishes at
+  // neither end. [r, r] for a rational r. (Refines the shared interval.)
+  std::pair<mpq_class, mpq_class> canonical_interval() const;
+  // "7/3" for a rational, "root of [c0, c1, ...] in (lo, hi)" otherwise,
+  // with the canonical interval: the same text however the value was
+  // compared before.
   std::string to_string() const;
 
 private:

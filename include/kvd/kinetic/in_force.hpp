@@ -80,6 +80,8 @@ public:
   }
 
   const Certificate<Poly>& operator[](std::size_t id) const { return *entries_[id].certificate; }
+  // The failure time the queue holds for it.
+  const std::optional<Time>& fails(std::size_t id) const { return entries_[id].fails; }
   std::size_t size() const { return ids_.size(); }
   // By name.
   template <class F>
