@@ -415,3 +415,56 @@ TEST_CASE("edge events detected by II certificates (thesis Fig. 7.11): an edge p
         - T(3) [SV(E3,E12,T3) SE(E3,T3), SV(e11,E3) SE(e11), SV(e11,E12) SE(E12,T3)]
 )");
 }
+
+TEST_CASE("dragging with merging and splitting effects (thesis Fig. 7.4): a vertex crossing the P-plane of an ancestor",
+          "[local]") {
+  // Three triangles. v5 crosses P(1) and its P-node moves from P(1)'s
+  // negative subtree (below E(1)) to the positive one (below P(4)). On the
+  // old side its node goes, the piece of e4 ending at v5 goes (a merging
+  // effect) and the pieces of T(1) on either side of P(5) become one; e5's
+  // piece is split at P(1) (a splitting effect), one part staying. On the
+  // new side the two pieces of e4 meeting at P(1) become one fragment from
+  // v4 to v5 (same-priority nodes joined, like e3 in the figure).
+  const scene::Scene s = generated(3, 1);
+  const auto sim = run(s, kinetic::Update::local, 4);
+  REQUIRE(sim.batches.size() >= 2);
+  const auto& b = sim.batches[1];
+  CHECK(b.failing == std::vector<kinetic::Failure>{{kinetic::Certificate_type::VV, "SV(v5) P(1)"}});
+  REQUIRE(b.time.is_rational());
+  CHECK(b.time.rational() == test::q(6516838, 2848615));
+  const Figure f = figure(s, kinetic::rational_between(sim.batches[0].time, b.time), b.time.rational());
+  CHECK(below(f.before, SP{SP::Kind::E, 1}) == R"(E(1) [SV(v1) SV(v2) SE(e1)]
+  - P(5) [SV(v5)]
+    - E(3) [SV(e3,P2) SV(e3,E1) SE(e3)]
+      + E(5) [SV(v5) SV(e5,P2) SE(e5)]
+        + T(1) [SV(e3,P2) SE(e3), SV(e3,E1) SE(E1,T1), SV(P5,E1,T1) SE(P5,T1), SV(v5) SE(e5), SV(e5,P2) SE(P2,T1)]
+    + E(4) [SV(e4,P1) SV(v5) SE(e4)]
+      + T(1) [SV(P5,E1,T1) SE(E1,T1), SV(v1,T1) SE(P1,T1), SV(e4,P1) SE(e4), SV(v5) SE(P5,T1)]
+  + E(2) [SV(v2) SV(e2,P1) SE(e2)]
+    + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
+      - E(3) [SV(e3,E1) SV(e3,P1) SE(e3)]
+        + T(1) [SV(e3,E1) SE(e3), SV(e3,P1) SE(P1,T1), SV(v1,T1) SE(E1,T1)]
+)");
+  CHECK(below(f.after, SP{SP::Kind::E, 1}) == R"(E(1) [SV(v1) SV(v2) SE(e1)]
+  - E(3) [SV(e3,P2) SV(e3,E1) SE(e3)]
+    + E(5) [SV(e5,P1) SV(e5,P2) SE(e5)]
+      + T(1) [SV(e3,P2) SE(e3), SV(e3,E1) SE(E1,T1), SV(v1,T1) SE(P1,T1), SV(e5,P1) SE(e5), SV(e5,P2) SE(P2,T1)]
+  + E(2) [SV(v2) SV(e2,P1) SE(e2)]
+    + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
+      - E(3) [SV(e3,E1) SV(e3,P1) SE(e3)]
+        + T(1) [SV(e3,E1) SE(e3), SV(e3,P1) SE(P1,T1), SV(v1,T1) SE(E1,T1)]
+)");
+  CHECK(below(f.before, SP{SP::Kind::P, 4}) == R"(P(4) [SV(v4)]
+  - E(3) [SV(e3,E0) SV(v4) SE(e3)]
+    + E(4) [SV(v4) SV(e4,P1) SE(e4)]
+      + T(1) [SV(e3,E0) SE(e3), SV(v4) SE(e4), SV(e4,P1) SE(P1,T1), SV(v1,T1) SE(E0,T1)]
+)");
+  CHECK(below(f.after, SP{SP::Kind::P, 4}) == R"(P(4) [SV(v4)]
+  - P(5) [SV(v5)]
+    - E(5) [SV(v5) SV(e5,P1) SE(e5)]
+      + T(1) [SV(v5) SE(e5), SV(e5,P1) SE(P1,T1), SV(v1,T1) SE(E0,T1), SV(P5,E0,T1) SE(P5,T1)]
+    + E(3) [SV(e3,E0) SV(v4) SE(e3)]
+      + E(4) [SV(v4) SV(v5) SE(e4)]
+        + T(1) [SV(e3,E0) SE(e3), SV(v4) SE(e4), SV(v5) SE(P5,T1), SV(P5,E0,T1) SE(E0,T1)]
+)");
+}
