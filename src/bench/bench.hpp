@@ -9,5 +9,8 @@ namespace kvd::bench {
 int accuracy(cli::Args& args);
 // kvd bench thesis: the thesis's Figures 8.4-8.9 for our implementation.
 int thesis(cli::Args& args);
+// kvd bench update: the local update against the rebuild, with and without
+// kept certificates.
+int update(cli::Args& args);
 
 }  // namespace kvd::bench
