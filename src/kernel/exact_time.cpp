@@ -140,8 +140,7 @@ std::pair<mpq_class, mpq_class> Exact_time::canonical_interval() const {
 }
 
 std::string Exact_time::to_string() const {
-  if (rep_->rational) return rep_->lo.get_str();
-  const auto [lo, hi] = canonical_interval();
+  const auto [lo, hi] = canonical_interval();  // [r, r] for a rational
   if (rep_->rational) return rep_->lo.get_str();
   std::ostringstream os;
   os << "root of [";

@@ -23,6 +23,15 @@ using SP = symbolic::Symbolic_plane;
 using SE = symbolic::Symbolic_edge;
 }  // namespace
 
+std::vector<SV> intersection_walls(const tree::Node& n) {
+  std::vector<SV> out;
+  if (const auto* e = std::get_if<tree::Edge_fragment>(&n.fragment))
+    for (const SV& end : {e->a, e->b})
+      if (end.kind == SV::Kind::intersection) out.push_back(end);
+  std::ranges::sort(out);  // the fragment's ends in either order
+  return out;
+}
+
 template <class K>
 class Reduced_maker<K>::Impl {
   using P = typename K::Poly;
@@ -79,7 +88,7 @@ private:
         case SP::Kind::P: p_walls.push_back({c_.plane_poly(cut), {Certificate_type::VV, v, cut}, cut}); break;
         case SP::Kind::E:
           e_walls.push_back({c_.plane_poly(cut), {Certificate_type::VE, v, cut}});
-          for (const SV& s : intersections(a)) p_walls.push_back({p_cut(s), {Certificate_type::IV, s, pv}, {}, s});
+          for (const SV& s : intersection_walls(node(a))) p_walls.push_back({p_cut(s), {Certificate_type::IV, s, pv}, {}, s});
           break;
         case SP::Kind::T: t_walls.push_back({c_.plane_poly(cut), {Certificate_type::VT, v, cut}}); break;
       }
@@ -102,7 +111,7 @@ private:
         const SP& above = node(a).cut;
         if (above.kind == SP::Kind::P) p_walls.push_back({c_.plane_poly(above), {Certificate_type::IV, end, above}, above});
         if (above.kind != SP::Kind::E) continue;
-        for (const SV& s : intersections(a))
+        for (const SV& s : intersection_walls(node(a)))
           p_walls.push_back({p_cut(s), {Certificate_type::II, end, std::nullopt, s}, {}, s});
       }
       const SV& other = end == f.a ? f.b : f.a;
@@ -135,15 +144,6 @@ private:
     P d = coplanar(m.vertex(e[0]), m.vertex(e[1]), m.vertex(ej[0]), m.vertex(ej[1]));
     if (d.is_zero()) d = c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()});
     add({Certificate_type::ET, nodes, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, SP{SP::Kind::E, s.ids[1]}}});
-  }
-
-  // The intersection points an E-node's fragment ends at.
-  std::vector<SV> intersections(int n) const {
-    const auto& f = std::get<tree::Edge_fragment>(node(n).fragment);
-    std::vector<SV> out;
-    for (const SV& end : {f.a, f.b})
-      if (end.kind == SV::Kind::intersection) out.push_back(end);
-    return out;
   }
 
   // The implicit P-cut through an intersection point: x ∨ z ∨ s, as SP(V).

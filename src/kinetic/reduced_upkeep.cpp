@@ -8,21 +8,6 @@
 
 namespace kvd::kinetic {
 
-namespace {
-
-// The intersection endpoints of an E-node's fragment: the P-walls it offers
-// its subtree besides its cut.
-std::vector<symbolic::Symbolic_vertex> intersections(const tree::Node& n) {
-  std::vector<symbolic::Symbolic_vertex> out;
-  if (const auto* e = std::get_if<tree::Edge_fragment>(&n.fragment))
-    for (const auto& end : {e->a, e->b})
-      if (end.kind == symbolic::Symbolic_vertex::Kind::intersection) out.push_back(end);
-  std::ranges::sort(out);  // the fragment's ends in either order
-  return out;
-}
-
-}  // namespace
-
 template <class K>
 typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
                                                               const tree::Kvd_tree& t, const typename K::Time& now,
@@ -38,6 +23,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     int node;
     Key key;
     std::vector<int> ancestors;
+    int children_path;
   };
   std::vector<Pending> pending;
   std::vector<bool> in_place(records_.size());
@@ -61,10 +47,10 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
       in_place[slot] = true;
       children = r.children_path;
     } else {
-      pending.push_back({v.node, Key{v.path, n.cut, tree::canonical(n.fragment)}, ancestors});
-      const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersections(n)}, next_path_);
+      const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersection_walls(n)}, next_path_);
       next_path_ += fresh;
       children = known->second;
+      pending.push_back({v.node, Key{v.path, n.cut, tree::canonical(n.fragment)}, ancestors, children});
     }
     ancestors.push_back(v.node);
     for (int child : {n.right, n.left})  // left first off the stack
@@ -116,7 +102,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     Record& r = records_[slot];
     r.used = true;
     r.fragment = n.fragment;
-    r.children_path = paths_.at(Path{pending[p].key.path, n.cut, intersections(n)});
+    r.children_path = pending[p].children_path;
     r.certificates = std::move(certs[p]);
     for (auto& cert : r.certificates) {
       cert.node = pending[p].node;

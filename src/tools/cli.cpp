@@ -56,10 +56,8 @@ const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& com
 }
 
 kinetic::Validation validation_option(const std::string& command, const std::string& value) {
-  if (value == "every") return kinetic::Validation::every;
-  if (value == "end") return kinetic::Validation::end;
-  if (value == "none") return kinetic::Validation::none;
-  throw Usage_error("kvd " + command + ": --validate expects every, end or none");
+  using V = kinetic::Validation;
+  return choice_option<V>(command, "--validate", value, {{"every", V::every}, {"end", V::end}, {"none", V::none}});
 }
 
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text) {

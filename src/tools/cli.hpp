@@ -7,9 +7,11 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kvd/kernel/kernel.hpp"
@@ -85,6 +87,22 @@ std::array<mpq_class, 3> point_option(const std::string& command, const std::str
 // Writes `text` to `path` through a temporary file in the same folder and a
 // rename, so that the file is either complete or untouched.
 void write_atomically(const std::string& command, const std::string& path, const std::string& text);
+
+// The value of an option with named choices ("--queue tree|heap"), E given
+// explicitly; a Usage_error "kvd COMMAND: FLAG expects a, b or c" for any
+// other.
+template <class E>
+E choice_option(const std::string& command, const std::string& flag, const std::string& value,
+                std::initializer_list<std::pair<const char*, E>> choices) {
+  std::string names;
+  std::size_t i = 0;
+  for (const auto& [name, e] : choices) {
+    if (value == name) return e;
+    names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string(name);
+    ++i;
+  }
+  throw Usage_error("kvd " + command + ": " + flag + " expects " + names);
+}
 
 // every, end or none, given to --validate.
 kinetic::Validation validation_option(const std::string& command, const std::string& value);

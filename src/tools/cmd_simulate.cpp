@@ -261,32 +261,24 @@ int simulate(Args& args) {
     else if (a == "--trace") trace = args.value(a);
     else if (a == "--list") list = true;
     else if (a == "--until") o.until = exact_option("simulate", a, args.value(a));
-    else if (a == "--certificates") {
-      const std::string& v = args.value(a);
-      if (v == "reduced") o.certificates = kinetic::Certificate_set::reduced;
-      else if (v == "full") o.certificates = kinetic::Certificate_set::full;
-      else throw Usage_error("kvd simulate: --certificates expects reduced or full");
-    } else if (a == "--queue") {
-      const std::string& v = args.value(a);
-      if (v == "tree") o.queue = kinetic::Queue_kind::tree;
-      else if (v == "heap") o.queue = kinetic::Queue_kind::heap;
-      else throw Usage_error("kvd simulate: --queue expects tree or heap");
-    } else if (a == "--update") {
-      const std::string& v = args.value(a);
-      if (v == "local") update = kinetic::Update::local;
-      else if (v == "rebuild") update = kinetic::Update::rebuild;
-      else throw Usage_error("kvd simulate: --update expects local or rebuild");
-    } else if (a == "--upkeep") {
-      const std::string& v = args.value(a);
-      if (v == "local") o.upkeep = kinetic::Upkeep::local;
-      else if (v == "all") o.upkeep = kinetic::Upkeep::all;
-      else throw Usage_error("kvd simulate: --upkeep expects local or all");
-    } else if (a == "--collisions") {
-      const std::string& v = args.value(a);
-      if (v == "reverse") o.collisions = kinetic::Collisions::reverse;
-      else if (v == "stop") o.collisions = kinetic::Collisions::stop;
-      else throw Usage_error("kvd simulate: --collisions expects reverse or stop");
-    } else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
+    else if (a == "--certificates")
+      o.certificates = choice_option<kinetic::Certificate_set>(
+          "simulate", a, args.value(a),
+          {{"reduced", kinetic::Certificate_set::reduced}, {"full", kinetic::Certificate_set::full}});
+    else if (a == "--queue")
+      o.queue = choice_option<kinetic::Queue_kind>(
+          "simulate", a, args.value(a), {{"tree", kinetic::Queue_kind::tree}, {"heap", kinetic::Queue_kind::heap}});
+    else if (a == "--update")
+      update = choice_option<kinetic::Update>(
+          "simulate", a, args.value(a), {{"local", kinetic::Update::local}, {"rebuild", kinetic::Update::rebuild}});
+    else if (a == "--upkeep")
+      o.upkeep = choice_option<kinetic::Upkeep>(
+          "simulate", a, args.value(a), {{"local", kinetic::Upkeep::local}, {"all", kinetic::Upkeep::all}});
+    else if (a == "--collisions")
+      o.collisions = choice_option<kinetic::Collisions>(
+          "simulate", a, args.value(a),
+          {{"reverse", kinetic::Collisions::reverse}, {"stop", kinetic::Collisions::stop}});
+    else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
     else if (!sa.take(args, a)) args.unknown(a);
   }
   if (o.certificates == kinetic::Certificate_set::full && update == kinetic::Update::local)

@@ -29,6 +29,11 @@
 
 namespace kvd::kinetic {
 
+// The intersection points an E-node's fragment ends at, in order: the
+// P-walls (intersection cuts) it offers its subtree besides its cut. None
+// for other nodes.
+std::vector<symbolic::Symbolic_vertex> intersection_walls(const tree::Node& n);
+
 // The reduced certificates one node makes at `now`, its ancestors being
 // `path` (root first); each named once, by name.
 template <class K>
