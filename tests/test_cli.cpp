@@ -263,3 +263,67 @@ TEST_CASE("kvd bench update compares the local update with the rebuild, or write
   CHECK(md.find("**no**") == std::string::npos);
   CHECK(std::ifstream(out + "/update.csv").good());
 }
+
+namespace {
+
+// Writes a scene (or any text) under the build folder; returns its path.
+std::string scene_file(const std::string& name, const std::string& text) {
+  const std::string path = std::string(KVD_BINARY_DIR) + "/" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+const std::string floor_tri = R"({"vertices": [["-1","0","-1"],["1","0","-1"],["0","0","1"]], "triangles": [[0,1,2]]})";
+
+}  // namespace
+
+TEST_CASE("scenes that crashed or hung end with a message and status 2", "[cli][trust]") {
+  // Two triangles crossing at the start: Build_error reached std::terminate (exit 134).
+  const std::string crossing = scene_file("crossing.json", R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
+      R"(, {"vertices": [["0","-1","0"],["0","1","0"],["0","0","2"]], "triangles": [[0,1,2]],
+            "motion": {"translation": [[0, 1], 0, 0]}}]})");
+  CHECK(run("simulate " + crossing + " --allow-intersecting").status == 2);
+  CHECK(run("certify " + crossing + " --allow-intersecting --out " + std::string(KVD_BINARY_DIR) + "/crossing.cert").status == 2);
+  CHECK(run("diff " + crossing + " --allow-intersecting --kernel double").status == 2);
+  CHECK(run("build " + crossing + " --allow-intersecting").status == 2);
+  // W = 1 - t: order and render at t = 1 died of SIGFPE (exit 136).
+  const std::string w_zero = scene_file("w-zero.json", R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 2}, "objects": [)" +
+      floor_tri + R"(, {"vertices": [[0,5,0],[1,5,0],[0,5,1]], "triangles": [[0,1,2]],
+            "motion": {"matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,[1,-1]]]}}]})");
+  for (const char* command : {"info", "simulate", "order --view 1,2,30 --time 1", "render --view 1,2,30 --time 1"})
+    CHECK(run(std::string(command) + " " + w_zero).status == 2);
+  // -1e400 is infinite in double: the double run hung.
+  const std::string huge = scene_file("huge.json", R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
+      R"(, {"vertices": [["-1e400","5","0"],[1,5,0],[0,5,1]], "triangles": [[0,1,2]], "motion": {"translation": [0, [0, 1], 0]}}]})");
+  CHECK(run("simulate " + huge + " --kernel double").status == 2);
+  CHECK(run("build " + huge + " --kernel double").status == 2);
+  CHECK(run("diff " + huge + " --kernel double").status == 2);
+  CHECK(run("build " + huge + " --kernel mpfr:53").status == 0);
+  CHECK(run("build " + huge).status == 0);
+}
+
+TEST_CASE("times outside the scene's span are refused", "[cli][trust]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";  // span [0, 10]
+  CHECK(run("build " + scene + " --time 11").status == 2);
+  CHECK(run("build " + scene + " --time -1").status == 2);
+  CHECK(run("build " + scene + " --time 10").status == 0);
+  CHECK(run("order " + scene + " --view 0,0,50 --time 20").status == 2);
+  CHECK(run("simulate " + scene + " --until 10.5").status == 2);
+  CHECK(run("simulate " + scene + " --until -1").status == 2);
+  CHECK(run("certify " + scene + " --until 11 --out " + std::string(KVD_BINARY_DIR) + "/span.cert").status == 2);
+}
+
+TEST_CASE("vertices of no triangle cost nothing and change no tree", "[cli][trust]") {
+  const std::string without = scene_file("used.json", R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
+      R"(, {"vertices": [[0,5,0],[1,5,0],[0,5,1]], "triangles": [[0,1,2]], "motion": {"translation": [0, [0, -1], 0]}}]})");
+  std::string extra;
+  for (int i = 0; i < 2000; ++i) extra += ",[" + std::to_string(i) + ",7,7]";
+  const std::string with = scene_file("unused.json", R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
+      R"(, {"vertices": [[0,5,0],[1,5,0],[0,5,1])" + extra + R"(], "triangles": [[0,1,2]], "motion": {"translation": [0, [0, -1], 0]}}]})");
+  const auto a = nlohmann::json::parse(run("build " + without + " --json").out);
+  const auto b = nlohmann::json::parse(run("build " + with + " --json").out);
+  CHECK(b["vertices"] == 2006);
+  CHECK(a["p_nodes"] == 6);
+  CHECK(b["p_nodes"] == 6);
+  CHECK(a["structure_hash"] == b["structure_hash"]);
+}

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "kvd/scene/exact_number.hpp"
 #include "kvd/scene/scene_io.hpp"
 
 using kvd::scene::read_scene;
@@ -45,8 +46,14 @@ TEST_CASE("the baseline documents of these tests load", "[scene][reject]") {
 TEST_CASE("malformed JSON, deep nesting, duplicate keys and garbage are rejected", "[scene][reject]") {
   REJECTED_AT("{\"format\": ", "malformed JSON", "byte");
   REJECTED_AT(doc("[" + tri + "]") + " 7", "malformed JSON", "byte");
-  REJECTED_AT(std::string(100000, '['), "nesting deeper than 64", "nesting");
-  REJECTED_AT(R"({"format": "kvd-scene/1", "format": "kvd-scene/1", "objects": [])", "duplicate key", "format");
+  // Nesting and duplicate keys name their JSON place.
+  std::string deep_place;
+  for (int i = 0; i < 64; ++i) deep_place += "/0";
+  REJECTED_AT(std::string(100000, '['), deep_place + ": nesting deeper than 64", "nesting");
+  REJECTED_AT(R"({"format": "kvd-scene/1", "format": "kvd-scene/1", "objects": [])", "/format: duplicate key", "format");
+  REJECTED_AT(R"({"format": "kvd-scene/1", "objects": [{"name": "a", "vertices": [], "name": "b"}]})",
+              "/objects/0/name: duplicate key", "\"name\"");
+  REJECTED_AT(R"({"format": "kvd-scene/1", "objects": [{"a/b~": {"x": 1, "x": 2}}]})", "/objects/0/a~1b~0/x: duplicate key", "x");
   REJECTED_AT(std::string("\x00\xff\xfe garbage", 12), "malformed JSON", "byte");
   REJECTED_AT(R"({"format": "kvd-scene/1", "name": "\xff", "objects": []})", "malformed JSON", "byte");
   CHECK(rejection(std::string(63, '[') + std::string(63, ']')).find("nesting") == std::string::npos);
@@ -155,8 +162,57 @@ TEST_CASE("triangles intersecting at the start time are rejected unless allowed"
               "/objects/0/triangles/0", "intersects");
 }
 
-TEST_CASE("huge integers load exactly", "[scene][reject]") {
-  const std::string big(20000, '7');
+TEST_CASE("numbers up to the digit cap load exactly, longer ones are refused", "[scene][reject]") {
+  const std::string big(kvd::scene::max_digits - 1, '7');
   const auto s = read_scene(doc("[" + tri + "]", R"("time": {"start": ")" + big + R"(/3"}, )"), "big.json");
   CHECK(s.start == mpq_class(mpz_class(big), 3));
+  const std::string longer(kvd::scene::max_digits + 1, '7');
+  REJECTED_AT(doc("[" + tri + "]", R"("time": {"start": ")" + longer + R"("}, )"), "/time/start", "more than 10001 digits");
+  REJECTED_AT(doc("[" + tri + "]", R"("time": {"start": "1.)" + longer + R"("}, )"), "/time/start", "digits");
+  REJECTED_AT(doc("[" + tri + "]", R"("time": {"start": "1/)" + longer + R"("}, )"), "/time/start", "digits");
+  // A million digits are refused before any arithmetic, quoted by their start.
+  const std::string message = rejection(doc("[" + tri + "]", R"("time": {"start": ")" + std::string(1000000, '9') + R"("}, )"));
+  CHECK(message.find("more than 10001 digits") != std::string::npos);
+  CHECK(message.size() < 200);
+}
+
+TEST_CASE("motion polynomials above the degree cap are refused", "[scene][reject]") {
+  const auto translation = [](std::size_t coefficients) {
+    std::string c = "[";
+    for (std::size_t i = 0; i < coefficients; ++i) c += i ? ",0" : "1";
+    return doc("[" + tri + R"(,{"vertices": [[0,0,5],[1,0,5],[0,1,5]], "triangles": [[0,1,2]], "motion": {"translation": [)" +
+               c + R"(], 0, 0]}}])");
+  };
+  CHECK(rejection(translation(kvd::scene::max_motion_degree + 1)) == "");
+  REJECTED_AT(translation(kvd::scene::max_motion_degree + 2), "/objects/1/motion/translation/0", "at most 32");
+  REJECTED_AT(translation(5001), "/objects/1/motion/translation/0", "5001 coefficients");
+}
+
+TEST_CASE("a point reaching infinity or a triangle flattening inside the span is rejected", "[scene][reject]") {
+  // W = 1 - t: the mover passes through infinity at t = 1.
+  const std::string w_vanishing = R"(,{"vertices": [[0,0,5],[1,0,5],[0,1,5]], "triangles": [[0,1,2]],
+      "motion": {"matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,[1,-1]]]}}])";
+  REJECTED_AT(doc("[" + tri + w_vanishing, R"("time": {"start": 0, "end": 2}, )"), "/objects/1/vertices/0",
+              "W vanishes at t = 1, inside the time span");
+  // Without an end the whole future counts; the span's end itself counts.
+  REJECTED_AT(doc("[" + tri + w_vanishing), "/objects/1/vertices/0", "W vanishes at t = 1, after the start");
+  REJECTED_AT(doc("[" + tri + w_vanishing, R"("time": {"start": 0, "end": 1}, )"), "/objects/1/vertices/0", "t = 1,");
+  CHECK(rejection(doc("[" + tri + w_vanishing, R"("time": {"start": 0, "end": "99/100"}, )")) == "");
+  // An irrational instant, and a double root (W = (t - 1)^2 + 0 touches zero without changing sign).
+  REJECTED_AT(doc("[" + tri + R"(,{"vertices": [[0,0,5],[1,0,5],[0,1,5]], "triangles": [[0,1,2]],
+      "motion": {"matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,[2,0,-1]]]}}])"),
+              "/objects/1/vertices/0", "root of [2, 0, -1] in (1, 2) (about 1.41421356237309");
+  REJECTED_AT(doc("[" + tri + R"(,{"vertices": [[0,0,5],[1,0,5],[0,1,5]], "triangles": [[0,1,2]],
+      "motion": {"matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,[1,-2,1]]]}}])"),
+              "/objects/1/vertices/0", "W vanishes at t = 1,");
+  // A Euclidean decomposition point likewise.
+  REJECTED_AT(doc("[" + tri + "]", R"("decomposition": {"z": [0, 0, 50, [1, -1]]}, )"), "/decomposition/z", "W vanishes at t = 1");
+  REJECTED_AT(doc("[" + tri + "]", R"("decomposition": {"z": [0, 0, 50, [0, 1]]}, )"), "/decomposition/z", "zero at the start time");
+  // A triangle whose third vertex reaches the line of the other two at t = 1/2.
+  REJECTED_AT(doc(R"([{"vertices": [[0,0,0],[1,0,0],[0,1,0]], "triangles": [[0,1,2]],
+      "motion": {"vertices": [[0,0,0,1],[1,0,0,1],[0,[1,-2],0,1]]}}])"),
+              "/objects/0/triangles/0", "become collinear at t = 1/2");
+  // A triangle that only rotates never flattens.
+  CHECK(rejection(doc(R"([{"vertices": [[0,0,0],[1,0,0],[0,1,0]], "triangles": [[0,1,2]],
+      "motion": {"matrix": [[[1,0,-1],[0,-2],0,0],[[0,2],[1,0,-1],0,0],[0,0,[1,0,1],0],[0,0,0,[1,0,1]]]}}])")) == "");
 }

@@ -26,6 +26,14 @@ std::optional<mpq_class> parse_exact_number(std::string_view s, std::string& why
     why = "not a number (expected an integer, a decimal or a fraction such as \"-7/2\")";
     return std::nullopt;
   }
+  // Digits beyond the cap are refused before any arithmetic: a number's size,
+  // like its exponent, bounds the cost of everything computed from it.
+  const auto too_long = [&](std::size_t n) {
+    if (n <= max_digits) return false;
+    why = "a number of more than " + std::to_string(max_digits) + " digits";
+    return true;
+  };
+  if (too_long(whole.size())) return std::nullopt;
   mpq_class value;
   if (i < s.size() && s[i] == '/') {
     ++i;
@@ -34,6 +42,7 @@ std::optional<mpq_class> parse_exact_number(std::string_view s, std::string& why
       why = "not a number (a fraction is -?[0-9]+/[0-9]+)";
       return std::nullopt;
     }
+    if (too_long(whole.size() + den.size())) return std::nullopt;
     const mpz_class d = integer_of(den);
     if (d == 0) {
       why = "a fraction with a zero denominator";
@@ -51,6 +60,7 @@ std::optional<mpq_class> parse_exact_number(std::string_view s, std::string& why
         why = "not a number (a decimal point must be followed by digits)";
         return std::nullopt;
       }
+      if (too_long(whole.size() + frac.size())) return std::nullopt;
       mantissa += frac;
       fraction_digits = static_cast<long>(frac.size());
     }

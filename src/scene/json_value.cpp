@@ -136,7 +136,7 @@ public:
   bool start_object(std::size_t) override { return open(Json_value::Kind::object); }
   bool key(string_t& k) override {
     Json_value& obj = *stack_.back();
-    if (obj.find(k)) return fail("duplicate key \"" + k + "\"");
+    if (obj.find(k)) return fail(place(stack_.size() - 1) + "/" + pointer_token(k) + ": duplicate key \"" + k + "\"");
     obj.members.emplace_back(std::move(k), Json_value{});
     return true;
   }
@@ -176,12 +176,28 @@ private:
     return true;
   }
   bool open(Json_value::Kind k) {
-    if (static_cast<int>(stack_.size()) >= max_depth)
-      return fail("nesting deeper than " + std::to_string(max_depth) + " levels");
     Json_value* s = slot();
+    if (static_cast<int>(stack_.size()) >= max_depth)
+      return fail(place(stack_.size()) + ": nesting deeper than " + std::to_string(max_depth) + " levels");
     s->kind = k;
     stack_.push_back(s);
     return true;
+  }
+  // The JSON pointer (RFC 6901) of the value being read inside the first
+  // `levels` open containers: each one's last element or last key.
+  std::string place(std::size_t levels) const {
+    std::string at;
+    for (std::size_t i = 0; i < levels; ++i) {
+      const Json_value* c = stack_[i];
+      at += "/" + (c->kind == Json_value::Kind::array ? std::to_string(c->items.size() - 1)
+                                                       : pointer_token(c->members.back().first));
+    }
+    return at;
+  }
+  static std::string pointer_token(const std::string& key) {
+    std::string t;
+    for (char ch : key) t += ch == '~' ? "~0" : ch == '/' ? "~1" : std::string(1, ch);
+    return t;
   }
   bool close() {
     stack_.pop_back();

@@ -10,6 +10,7 @@
 #include "kvd/scene/exact_number.hpp"
 #include "kvd/scene/json_value.hpp"
 #include "kvd/scene/scene_io.hpp"
+#include "kvd/scene/span_check.hpp"
 #include "kvd/scene/triangle_intersection.hpp"
 
 namespace kvd::scene {
@@ -52,12 +53,16 @@ public:
       fail(at, std::string("expected a number, found ") + kind_name(v.kind));
     std::string why;
     auto q = parse_exact_number(v.text, why);
-    if (!q) fail(at, why + ": \"" + v.text + "\"");
+    // A long text is quoted by its first characters only.
+    if (!q) fail(at, why + ": \"" + (v.text.size() > 40 ? v.text.substr(0, 40) + "..." : v.text) + "\"");
     return *q;
   }
 
   QPoly poly(const Json_value& v, const std::string& at) const {
     if (v.kind != Kind::array) return QPoly(number(v, at));
+    if (v.items.size() > static_cast<std::size_t>(max_motion_degree) + 1)
+      fail(at, "a polynomial of " + std::to_string(v.items.size()) + " coefficients (the degree in t is at most " +
+                   std::to_string(max_motion_degree) + ")");
     std::vector<Q> c;
     for (std::size_t i = 0; i < v.items.size(); ++i) c.push_back(number(v.items[i], at + "/" + std::to_string(i)));
     return QPoly(std::move(c));
@@ -199,19 +204,48 @@ std::string triangle_place(const Scene& s, std::size_t t) {
   return "/objects/" + std::to_string(o) + "/triangles/" + std::to_string(t - s.objects[o].first_triangle);
 }
 
+// " at t = 7/3", or " at t = root of [...] in (lo, hi) (about 1.4142135623730951)".
+std::string instant_text(const Exact_time& t) {
+  if (t.is_rational()) return " at t = " + t.to_string();
+  std::ostringstream approx;
+  approx.precision(17);
+  approx << t.to_double();
+  return " at t = " + t.to_string() + " (about " + approx.str() + ")";
+}
+
 void Reader::check_geometry(const Scene& s, const Load_options& options) const {
-  for (std::size_t v = 0; v < s.rest.size(); ++v)
-    if (s.position_at(v, s.start)[3] == 0) {
-      const std::size_t o = s.vertex_object[v];
-      fail("/objects/" + std::to_string(o) + "/vertices/" + std::to_string(v - s.objects[o].first_vertex),
-           "this vertex's W is zero at the start time (it must stay a Euclidean point)");
-    }
+  const std::string span = s.end ? "inside the time span" : "after the start time (the scene has no end)";
+  for (std::size_t v = 0; v < s.rest.size(); ++v) {
+    const std::size_t o = s.vertex_object[v];
+    const std::string here = "/objects/" + std::to_string(o) + "/vertices/" + std::to_string(v - s.objects[o].first_vertex);
+    if (s.position_at(v, s.start)[3] == 0)
+      fail(here, "this vertex's W is zero at the start time (it must stay a Euclidean point)");
+    if (!s.is_moving(o)) continue;
+    if (const auto t = first_zero(s.position(v)[3], s.start, s.end))
+      fail(here, "this vertex's W vanishes" + instant_text(*t) + ", " + span +
+                     ": the point passes through infinity (end the span before it)");
+  }
+  for (const auto& [point, here] : {std::pair{&s.x, "/decomposition/x"}, std::pair{&s.z, "/decomposition/z"}}) {
+    const QPoly& w = (*point)[3];
+    if (w.is_zero()) continue;  // a direction
+    if (w(s.start) == 0)
+      fail(here, "W is zero at the start time but not identically (a point is a direction at every time or none)");
+    if (const auto t = first_zero(w, s.start, s.end))
+      fail(here, "W vanishes" + instant_text(*t) + ", " + span +
+                     ": the point passes through infinity (end the span before it)");
+  }
   const std::vector<Triangle3> tri = triangles_at(s, s.start);
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const Vec3 u{tri[t][1][0] - tri[t][0][0], tri[t][1][1] - tri[t][0][1], tri[t][1][2] - tri[t][0][2]};
     const Vec3 w{tri[t][2][0] - tri[t][0][0], tri[t][2][1] - tri[t][0][1], tri[t][2][2] - tri[t][0][2]};
     if (u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 && u[0] * w[1] - u[1] * w[0] == 0)
       fail(triangle_place(s, t), "the triangle's vertices are collinear at the start time");
+    if (!s.is_moving(s.triangle_object[t])) continue;
+    // Collinear exactly when the plane through the three points vanishes.
+    const auto& [i, j, k] = s.triangles[t];
+    const Plane4<QPoly> plane = join(s.position(i), s.position(j), s.position(k));
+    if (const auto when = first_common_zero({plane.c.begin(), plane.c.end()}, s.start, s.end))
+      fail(triangle_place(s, t), "the triangle's vertices become collinear" + instant_text(*when) + ", " + span);
   }
   if (options.allow_intersecting) return;
   if (const auto c = first_conflict(s, tri))

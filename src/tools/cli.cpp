@@ -47,7 +47,15 @@ bool Scene_args::take(Args& args, const std::string& a) {
 
 scene::Scene Scene_args::load_scene(const std::string& command) const {
   if (!path) throw Usage_error("kvd " + command + ": missing the SCENE file (see kvd " + command + " --help)");
-  return scene::load_scene(*path, load);
+  scene::Scene s = scene::load_scene(*path, load);
+  if (time) require_in_span(command, "--time", *time, s);
+  return s;
+}
+
+void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const scene::Scene& s) {
+  if (s.start <= t && (!s.end || t <= *s.end)) return;
+  throw Usage_error("kvd " + command + ": " + flag + " " + t.get_str() + " is outside the scene's time span [" +
+                    s.start.get_str() + ", " + (s.end ? s.end->get_str() : "no end") + "]");
 }
 
 const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& command) const {

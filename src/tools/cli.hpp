@@ -14,9 +14,11 @@
 #include <utility>
 #include <vector>
 
+#include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
+#include "kvd/scene/scene_numbers.hpp"
 #include "kvd/tree/build.hpp"
 
 namespace kvd::cli {
@@ -68,16 +70,39 @@ struct Scene_args {
   const std::array<mpq_class, 3>& required_view(const std::string& command) const;
 };
 
-// The KVD just after t; triangles that intersect then are bad input.
-template <class K>
-tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
-                          const predicates::Classifier<K>& classifier, const typename K::Time& t) {
+// What f returns; triangles that intersect where f needs them disjoint
+// (tree::Build_error) are bad input, reported with the scene's path.
+template <class F>
+auto with_disjoint_triangles(const std::string& command, const std::string& path, F&& f) {
   try {
-    return tree::build(classifier, t);
+    return f();
   } catch (const tree::Build_error& e) {
     throw Usage_error("kvd " + command + ": " + path + ": " + e.what());
   }
 }
+
+// The KVD just after t.
+template <class K>
+tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
+                          const predicates::Classifier<K>& classifier, const typename K::Time& t) {
+  return with_disjoint_triangles(command, path, [&] { return tree::build(classifier, t); });
+}
+
+// Scene_error naming the first number of the scene that K's coefficient
+// field cannot hold (1e400 is infinite in double); the exact kernel holds all.
+template <class K>
+void require_representable(const std::string& path, const scene::Scene& s, const K&) {
+  using FT = typename K::FT;
+  const auto bad = scene::first_number(s, [](const scene::Q& q) { return !is_finite(from_rational<FT>(q)); });
+  if (!bad) return;
+  throw scene::Scene_error(path + ": " + bad->place + ": " +
+                           (bad->power ? "the coefficient of t^" + std::to_string(bad->power) + ", " : "") + "about " +
+                           Mpfr_number(bad->value).to_string(5) + ", is not a finite number in the " + K::name +
+                           " kernel; use --kernel exact or mpfr:BITS");
+}
+
+// Usage_error unless start <= t <= end (the span's end, when it has one).
+void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const scene::Scene& s);
 
 // An exact number given to option `flag` ("1/3", "0.25"); Usage_error if not.
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text);

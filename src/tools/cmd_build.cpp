@@ -102,7 +102,10 @@ int build(Args& args) {
   const scene::Scene s = sa.load_scene("build");
   const scene::Q time = sa.time ? *sa.time : s.start;
   if (baseline) return run_bsp(s, time, sa.json);
-  return with_kernel("build", kernel, [&](const auto& k) { return run(k, *sa.path, s, time, sa.json, tree_only); });
+  return with_kernel("build", kernel, [&](const auto& k) {
+    require_representable(*sa.path, s, k);
+    return run(k, *sa.path, s, time, sa.json, tree_only);
+  });
 }
 
 }  // namespace kvd::cli

@@ -138,8 +138,15 @@ int diff(Args& args) {
     };
   };
   // Validate the kernel name before the exact run.
-  with_kernel("diff", *kernel, [](const auto&) { return 0; }, epsilon);
-  const kinetic::Exact_run exact = kinetic::run_exact(s, events, progress("exact"));
+  with_kernel(
+      "diff", *kernel,
+      [&](const auto& k) {
+        require_representable(*sa.path, s, k);
+        return 0;
+      },
+      epsilon);
+  const kinetic::Exact_run exact =
+      with_disjoint_triangles("diff", *sa.path, [&] { return kinetic::run_exact(s, events, progress("exact")); });
   return with_kernel(
       "diff", *kernel,
       [&](const auto& k) {

@@ -286,11 +286,15 @@ int simulate(Args& args) {
   o.update = update.value_or(o.certificates == kinetic::Certificate_set::full ? kinetic::Update::rebuild
                                                                             : kinetic::Update::local);
   const scene::Scene s = sa.load_scene("simulate");
+  if (o.until) require_in_span("simulate", "--until", *o.until, s);
   o.progress = [](std::size_t batches, std::size_t failures) {
     if (batches % 100 == 0) std::cerr << "kvd simulate: " << batches << " batches, " << failures << " failures\n";
   };
   return with_kernel(
-      "simulate", kernel, [&](const auto& k) { return report(k, s, o, trace, list, sa.json); }, epsilon);
+      "simulate", kernel, [&](const auto& k) {
+        require_representable(*sa.path, s, k);
+        return with_disjoint_triangles("simulate", *sa.path, [&] { return report(k, s, o, trace, list, sa.json); });
+      }, epsilon);
 }
 
 }  // namespace kvd::cli

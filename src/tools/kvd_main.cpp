@@ -6,6 +6,7 @@
 
 #include "cli.hpp"
 #include "kvd/scene/scene_io.hpp"
+#include "kvd/tree/build.hpp"
 #include "kvd/version.hpp"
 
 namespace {
@@ -69,8 +70,16 @@ int main(int argc, char** argv) {
   } catch (const kvd::scene::Scene_error& e) {
     std::cerr << "kvd " << command << ": " << e.what() << "\n";
     return 2;
+  } catch (const kvd::tree::Build_error& e) {
+    // Triangles that cross where a command needs them disjoint: bad input.
+    std::cerr << "kvd " << command << ": " << e.what() << "\n";
+    return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "kvd " << command << ": out of memory\n";
     return 2;
+  } catch (const std::exception& e) {
+    // A failure of kvd itself, never std::terminate: reported as a failed check.
+    std::cerr << "kvd " << command << ": internal error: " << e.what() << "\n";
+    return 1;
   }
 }

@@ -44,7 +44,9 @@ void sort_by_priority(const scene::Scene& s, std::vector<SP>& sites) {
 
 std::vector<SP> sites_in_priority_order(const scene::Scene& s) {
   std::vector<SP> out;
-  for (std::size_t v = 0; v < s.rest.size(); ++v) out.push_back({SP::Kind::P, v});
+  // A vertex of no triangle is no feature of the decomposition: it has no cut.
+  for (std::size_t v = 0; v < s.rest.size(); ++v)
+    if (!s.vertex_edges[v].empty()) out.push_back({SP::Kind::P, v});
   for (std::size_t e = 0; e < s.edges.size(); ++e) out.push_back({SP::Kind::E, e});
   for (std::size_t t = 0; t < s.triangles.size(); ++t) out.push_back({SP::Kind::T, t});
   sort_by_priority(s, out);

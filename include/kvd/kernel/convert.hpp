@@ -23,6 +23,11 @@ inline Mpfr_number from_rational<Mpfr_number>(const mpq_class& q) {
 template <>
 double from_rational<double>(const mpq_class& q);  // src/kernel/convert.cpp
 
+// Whether a kernel number is a finite value (not an infinity or a NaN).
+inline bool is_finite(const mpq_class&) { return true; }
+inline bool is_finite(double d) { return d - d == 0; }  // false for inf and NaN
+inline bool is_finite(const Mpfr_number& x) { return mpfr_number_p(x.get()) != 0; }
+
 inline mpq_class to_rational(const mpq_class& q) { return q; }
 inline mpq_class to_rational(double d) { return mpq_class(d); }  // mpq_set_d is exact
 mpq_class to_rational(const Mpfr_number& x);

@@ -14,6 +14,9 @@ namespace kvd::scene {
 // Decimal exponents beyond this magnitude are rejected: 1e100000 would be a
 // number of a hundred thousand digits.
 inline constexpr long max_exponent = 10000;
+// A number's digits (numerator and denominator, or integer and fraction
+// parts together) are capped alike, at the size 1e10000 spells.
+inline constexpr std::size_t max_digits = 10001;
 
 // The exact rational the text denotes, or none with `why` set.
 std::optional<mpq_class> parse_exact_number(std::string_view text, std::string& why);

@@ -19,6 +19,11 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// A motion polynomial has at most this degree in t (33 coefficients): the
+// certificates multiply motions, so their degree, and the cost of isolating
+// their roots, grows with it.
+inline constexpr int max_motion_degree = 32;
+
 struct Load_options {
   // Replaces the file's priority (seed or explicit order) by this seed.
   std::optional<std::uint64_t> seed;

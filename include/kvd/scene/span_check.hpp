@@ -1,0 +1,24 @@
+// Exact checks that a scene stays well-formed over its whole time span, not
+// only at the start: a Euclidean point must not reach infinity (its W
+// vanishing) and a triangle must not flatten to a segment. Both are decided
+// by exact real-root isolation, so a scene is rejected exactly when the event
+// happens inside the span (the end included).
+#pragma once
+
+#include <optional>
+
+#include "kvd/kernel/exact_time.hpp"
+#include "kvd/scene/scene.hpp"
+
+namespace kvd::scene {
+
+// The first t in (start, end] (in (start, infinity) without an end) at which
+// p(t) = 0, roots of even multiplicity included; nothing when p never
+// vanishes there. p must not be the zero polynomial.
+std::optional<Exact_time> first_zero(const QPoly& p, const Q& start, const std::optional<Q>& end);
+
+// The first t in (start, end] at which the polynomials all vanish together
+// (the real roots of their gcd); nothing when they never do. Not all zero.
+std::optional<Exact_time> first_common_zero(const std::vector<QPoly>& ps, const Q& start, const std::optional<Q>& end);
+
+}  // namespace kvd::scene
