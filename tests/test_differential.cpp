@@ -3,6 +3,9 @@
 // scenes (agreement where nothing is stiff, divergence found where it is,
 // recovery instead of a crash where rounding breaks a build).
 #include <catch2/catch.hpp>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -177,4 +180,52 @@ TEST_CASE("differential: a build broken by rounding is repaired, not fatal", "[d
   CHECK(d.recovery.rebuilds >= d.recovery.failed_builds);
   CHECK(d.recovery.unrepaired == 0);
   CHECK(d.inexact.size() >= exact.sim.failures / 2);
+}
+
+namespace {
+
+// Every floating-point kernel the accuracy benchmark charts.
+std::vector<std::pair<std::string, std::function<kinetic::Differential(const kinetic::Exact_run&, const scene::Scene&)>>>
+float_kernels() {
+  std::vector<std::pair<std::string, std::function<kinetic::Differential(const kinetic::Exact_run&, const scene::Scene&)>>> ks;
+  ks.emplace_back("double", [](const auto& x, const auto& s) { return kinetic::compare_with(x, Double_kernel(), s); });
+  for (unsigned bits : {24u, 53u, 113u, 256u, 1024u})
+    ks.emplace_back("mpfr:" + std::to_string(bits),
+                    [bits](const auto& x, const auto& s) { return kinetic::compare_with(x, Mpfr_kernel(bits), s); });
+  return ks;
+}
+
+}  // namespace
+
+TEST_CASE("differential: every floating-point kernel advances through every stiff scene", "[differential][stiff][progress]") {
+  // A run that repeats a batch without advancing used to end only at its
+  // event cap (tangential at 256 bits: 396 batches at t = 2). Now every
+  // run ends by the exact run's span, or says it is stuck.
+  for (const char* name : {"close-events", "simultaneous", "tangential", "wide-range", "slow-fast", "high-degree",
+                           "rational-rotation", "near-degenerate", "z-near-plane"}) {
+    const scene::Scene s = load(std::string("stiff/") + name + ".json");
+    const auto exact = kinetic::run_exact(s, 100);
+    for (const auto& [kernel, compare] : float_kernels()) {
+      INFO(name << " in " << kernel);
+      const kinetic::Differential d = compare(exact, s);
+      CHECK(d.inexact_stopped != kinetic::Stop::stuck);
+      CHECK(d.inexact_stopped != kinetic::Stop::events);  // the cap of 2n + 100 failures was never reached
+      CHECK(d.recovery.unrepaired == 0);
+      CHECK(d.inexact.size() <= 2 * d.events.size() + 10);
+    }
+  }
+}
+
+TEST_CASE("differential: a refire inside a rounding zone is stepped past", "[differential][stiff][recovery]") {
+  // tangential's (t - 2)^3 crossing: at 256 bits the rounded certificate
+  // changes sign anywhere within about 2^-85 of t = 2, far beyond epsilon
+  // (2^-128). The run steps past that zone once and goes on to t = 4.
+  const scene::Scene s = load("stiff/tangential.json");
+  const auto exact = kinetic::run_exact(s, 100);
+  const kinetic::Differential d = kinetic::compare_with(exact, Mpfr_kernel(256), s);
+  CHECK(d.recovery.zones_skipped >= 1);
+  CHECK(d.recovery.refires <= 3);
+  CHECK(d.missed_events == 0);
+  CHECK(exact.sim.stopped == kinetic::Stop::limit);
+  CHECK(d.inexact_stopped == kinetic::Stop::limit);  // to the scene's end, t = 4
 }

@@ -161,6 +161,7 @@ Differential compare_with(const Exact_run& exact, const K& k, const scene::Scene
   const auto sim = simulate(k, s, o);
   const double seconds = seconds_since(start);
   Differential d = compare_runs(exact.sim, sim);
+  d.inexact_stopped = sim.stopped;
   d.seconds_exact = exact.seconds;
   d.seconds_inexact = seconds;
   return d;

@@ -127,8 +127,17 @@ public:
       now_ = std::move(at);
       if (observer_) observer_->batch(batch, false);
       const auto cert_start = std::chrono::steady_clock::now();
+      std::vector<typename K::Poly> fired;  // the failing polynomials, for a floating-point repair
+      if constexpr (floating)
+        for (std::size_t id : first) fired.insert(fired.end(), in_force_[id].polys.begin(), in_force_[id].polys.end());
       keep_certificates(batch);
-      if constexpr (floating) repair(batch);
+      if constexpr (floating) {
+        if (!repair(batch, fired)) {
+          sim_.stopped = Stop::stuck;
+          sim_.batches.push_back(std::move(batch));
+          break;
+        }
+      }
       batch.certificate_seconds = seconds_since(cert_start);
       batch.structure = tree::structure_hash(current_);
       sim_.batches.push_back(std::move(batch));
@@ -283,18 +292,45 @@ private:
   // to the first later instant whose tree differs. (A certificate cannot
   // fail in the past: each is oriented positive just after the instant it is
   // made, and its failure time is a root later than that instant by more
-  // than epsilon.)
-  void repair(const Batch<Time>& b)
+  // than epsilon.) When no nearby tree differs, the certificate is firing
+  // inside its own rounding zone (around a root of high multiplicity,
+  // rounded values change sign anywhere within about epsilon^(1/m)), and
+  // the run steps past that zone. Returns false when it cannot: the run
+  // stops there rather than repeat the batch without advancing.
+  bool repair(const Batch<Time>& b, const std::vector<typename K::Poly>& fired)
     requires floating
   {
-    if (b.changed || sim_.batches.empty() || sim_.batches.back().failing != b.failing) return;
+    if (b.changed || sim_.batches.empty() || sim_.batches.back().failing != b.failing) return true;
     ++sim_.recovery.refires;
     auto later = step_forward(now_, [&](const tree::Kvd_tree& t) { return tree::first_difference(current_, t).has_value(); });
+    if (!later) later = step_past(now_, fired);
     if (!later) {
       ++sim_.recovery.unrepaired;
-      return;
+      return false;
     }
     adopt(std::move(later->second), std::move(later->first));
+    return true;
+  }
+
+  // The first instant base + 2^i epsilon (i = 1, 2, ..., while the step is
+  // below 1) from which none of `fired` changes sign again within the step,
+  // with its tree: past the zone where rounding makes them fire again.
+  std::optional<std::pair<Time, tree::Kvd_tree>> step_past(const Time& base, const std::vector<typename K::Poly>& fired)
+    requires floating
+  {
+    for (FT step = k_.epsilon() * FT(2); step < FT(1); step = step * FT(2)) {
+      const Time later = base + step;
+      const bool clear = std::ranges::none_of(fired, [&](const typename K::Poly& p) {
+        const auto r = k_.next_root(p, later);
+        return r && k_.compare(*r, later + step) <= 0;
+      });
+      if (!clear) continue;
+      if (std::optional<tree::Kvd_tree> t = try_build(later)) {
+        ++sim_.recovery.zones_skipped;
+        return std::pair{later, std::move(*t)};
+      }
+    }
+    return std::nullopt;
   }
 
   // Floating-point kernels: a repaired tree (a fresh build found by
@@ -313,6 +349,7 @@ private:
   std::optional<std::pair<Time, tree::Kvd_tree>> validate(const Time& from, const Time& to,
                                                           const tree::Kvd_tree& in_force) {
     Time mid = between(k_, from, to);
+    ++sim_.validations;
     std::optional<std::string> diff;
     std::optional<tree::Kvd_tree> fresh;
     try {

@@ -63,9 +63,19 @@ const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& com
   return *view;
 }
 
+namespace {
+using V = kinetic::Validation;
+constexpr std::pair<const char*, V> validations[] = {{"every", V::every}, {"end", V::end}, {"none", V::none}};
+}  // namespace
+
 kinetic::Validation validation_option(const std::string& command, const std::string& value) {
-  using V = kinetic::Validation;
-  return choice_option<V>(command, "--validate", value, {{"every", V::every}, {"end", V::end}, {"none", V::none}});
+  return choice_option<V>(command, "--validate", value, {validations[0], validations[1], validations[2]});
+}
+
+const char* validation_name(kinetic::Validation v) {
+  for (const auto& [name, value] : validations)
+    if (value == v) return name;
+  return "?";
 }
 
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text) {

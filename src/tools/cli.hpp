@@ -131,6 +131,8 @@ E choice_option(const std::string& command, const std::string& flag, const std::
 
 // every, end or none, given to --validate.
 kinetic::Validation validation_option(const std::string& command, const std::string& value);
+// The option value that names v ("every").
+const char* validation_name(kinetic::Validation v);
 
 // The items of a comma-separated option value, non-empty, each once, in order.
 std::vector<std::string> comma_list(const std::string& text);

@@ -143,6 +143,31 @@ std::string by_type_text(const kinetic::Type_counts& counts) {
   return std::to_string(total) + (out.empty() ? "" : " (" + out.substr(1) + ")");
 }
 
+// Why the run stopped, in words.
+template <class K>
+std::string stop_text(const K& k, const kinetic::Simulation<typename K::Time>& sim, const kinetic::Options& o) {
+  switch (sim.stopped) {
+    case kinetic::Stop::events: return "the event limit (--events " + std::to_string(o.max_events) + ")";
+    case kinetic::Stop::limit:
+      return "the time limit " + sim.limit->get_str() +
+             (o.until && *o.until == *sim.limit ? " (--until)" : " (the scene's end)") + ": no failure before it";
+    case kinetic::Stop::exhausted: return "no certificate fails any more";
+    case kinetic::Stop::collision: return "a collision (--collisions stop, or no reversal possible)";
+    case kinetic::Stop::stuck:
+      return "stuck at t = " + approx(k.to_double(sim.time_reached)) + ": a batch repeats without advancing";
+  }
+  return "?";
+}
+
+// Which trees were checked against a fresh build, and what was found.
+template <class Time>
+std::string validation_text(const kinetic::Simulation<Time>& sim, const kinetic::Options& o) {
+  if (o.validate == kinetic::Validation::none) return "none (--validate none)";
+  return std::string(o.validate == kinetic::Validation::every ? "every batch" : "the last batch") + ", " +
+         std::to_string(sim.validations) + " trees compared with a fresh build, " +
+         std::to_string(sim.validation_failures) + " mismatches";
+}
+
 template <class K>
 int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const std::optional<std::string>& trace,
            bool list, bool json) {
@@ -177,7 +202,9 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << ", \"nodes_median\": " << fixed(recomputed.nodes_median, 1) << ", \"total\": " << recomputed.total << "}"
               << ", \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
               << ", \"simultaneous_batches\": " << sim.simultaneous_batches
-              << ", \"collisions\": " << collisions << ", \"validation_failures\": " << sim.validation_failures
+              << ", \"collisions\": " << collisions << ", \"stopped\": " << json_string(stop_name(sim.stopped))
+              << ", \"validation\": " << json_string(validation_name(o.validate)) << ", \"validations\": " << sim.validations
+              << ", \"validation_failures\": " << sim.validation_failures
               << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
               << ", \"time_reached_exact\": " << json_string(k.to_string(sim.time_reached))
               << ", \"structure_hash\": " << json_string(sim.structure_hash)
@@ -212,6 +239,8 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << "events:        " << sim.failures << " certificate failures in " << sim.batches.size() << " batches ("
               << sim.simultaneous_batches << " simultaneous)\n"
               << "time reached:  " << approx(k.to_double(sim.time_reached)) << "\n"
+              << "stopped:       " << stop_text(k, sim, o) << "\n"
+              << "validation:    " << validation_text(sim, o) << "\n"
               << (sim.motion_changes.empty() ? std::string()
                                              : "collisions:    " + std::to_string(sim.motion_changes.size()) +
                                                    " answered by reversing motions (X-collide)\n")
@@ -232,6 +261,11 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
     if (sim.recovery.detected()) std::cout << "recovery:      " << recovery_text(sim.recovery) << "\n";
   }
   if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
+  if (sim.stopped == kinetic::Stop::stuck) {
+    std::cerr << "kvd simulate: the " << K::name << " run repeats a batch at t = " << approx(k.to_double(sim.time_reached))
+              << " without advancing, and no repair moved past it: stopped\n";
+    return 1;
+  }
   if (!sim.valid()) {
     std::cerr << "kvd simulate: validation failed: " << sim.failure << "\n";
     return 1;

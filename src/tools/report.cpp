@@ -57,13 +57,25 @@ double log10_of(const mpq_class& q) {
 std::string recovery_json(const kinetic::Recovery& r) {
   return "{\"failed_builds\": " + std::to_string(r.failed_builds) + ", \"refires\": " +
          std::to_string(r.refires) + ", \"stale_trees\": " + std::to_string(r.stale_trees) +
-         ", \"rebuilds\": " + std::to_string(r.rebuilds) + ", \"unrepaired\": " + std::to_string(r.unrepaired) + "}";
+         ", \"rebuilds\": " + std::to_string(r.rebuilds) + ", \"zones_skipped\": " + std::to_string(r.zones_skipped) + ", \"unrepaired\": " + std::to_string(r.unrepaired) + "}";
+}
+
+const char* stop_name(kinetic::Stop s) {
+  switch (s) {
+    case kinetic::Stop::events: return "events";
+    case kinetic::Stop::limit: return "limit";
+    case kinetic::Stop::exhausted: return "exhausted";
+    case kinetic::Stop::collision: return "collision";
+    case kinetic::Stop::stuck: return "stuck";
+  }
+  return "?";
 }
 
 std::string recovery_text(const kinetic::Recovery& r) {
   return std::to_string(r.failed_builds) + " failed builds, " + std::to_string(r.refires) + " repeated batches, " +
          std::to_string(r.stale_trees) + " stale trees; " +
-         std::to_string(r.rebuilds) + " trees adopted, " + std::to_string(r.unrepaired) + " left unrepaired";
+         std::to_string(r.rebuilds) + " trees adopted (" + std::to_string(r.zones_skipped) + " past a rounding zone), " +
+         std::to_string(r.unrepaired) + " left unrepaired";
 }
 
 }  // namespace kvd::cli

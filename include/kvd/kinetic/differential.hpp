@@ -58,6 +58,7 @@ struct Differential {
   mpq_class max_relative_time_error;
   double seconds_exact = 0, seconds_inexact = 0;
   Recovery recovery;  // of the inexact run
+  Stop inexact_stopped = Stop::exhausted;  // why the inexact run stopped
 };
 
 // The exact run the comparisons share, with its wall time.

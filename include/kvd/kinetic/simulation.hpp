@@ -99,14 +99,17 @@ struct Recovery {
   std::size_t refires = 0;        // batches repeating the previous batch's failures with the tree unchanged
   std::size_t stale_trees = 0;    // trees in force that validation found differing from a fresh build
   std::size_t rebuilds = 0;       // trees adopted to repair one of the above
-  std::size_t unrepaired = 0;     // signs still present after the last step (the run goes on)
+  std::size_t zones_skipped = 0;  // refires repaired by stepping past the certificates' rounding zone
+  std::size_t unrepaired = 0;     // refires that no step repaired: the run stopped (Stop::stuck)
   std::size_t detected() const { return failed_builds + refires + stale_trees; }
 };
 inline constexpr int recovery_steps = 20;
 
 // Why a simulation stopped: max_events reached, the next failure after the
-// time limit (the scene's end or `until`), no failure left, triangles met.
-enum class Stop { events, limit, exhausted, collision };
+// time limit (the scene's end or `until`), no failure left, triangles met,
+// or (floating-point kernels only) a batch repeating without time advancing
+// that no repair could move past.
+enum class Stop { events, limit, exhausted, collision, stuck };
 
 template <class Time>
 struct Simulation {
@@ -123,6 +126,7 @@ struct Simulation {
   Stop stopped = Stop::exhausted;
   std::optional<mpq_class> limit;  // the time limit in force: the earlier of the scene's end and `until`
   Recovery recovery;
+  std::size_t validations = 0;  // trees in force compared with a fresh build
   std::size_t validation_failures = 0;
   std::string failure;  // the first validation failure, in words
   bool valid() const { return validation_failures == 0; }
