@@ -4,6 +4,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -326,4 +327,28 @@ TEST_CASE("vertices of no triangle cost nothing and change no tree", "[cli][trus
   CHECK(a["p_nodes"] == 6);
   CHECK(b["p_nodes"] == 6);
   CHECK(a["structure_hash"] == b["structure_hash"]);
+}
+
+TEST_CASE("outputs are written whole or not at all, and leave no temporary file", "[cli][trust]") {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(KVD_BINARY_DIR) / "atomic-out";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";
+  const fs::path trace = folder / "run.jsonl";
+  std::ofstream(trace) << "old contents\n";
+  CHECK(run("simulate " + scene + " --events 5 --trace " + trace.string()).status == 0);
+  std::ifstream in(trace);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.rfind("{\"batch\": 0", 0) == 0);
+  // A folder that does not exist: status 2, the old file untouched elsewhere, nothing left behind.
+  CHECK(run("generate boxes -o " + (folder / "missing" / "x.json").string()).status == 2);
+  CHECK(run("simulate " + scene + " --events 5 --trace " + (folder / "missing" / "t.jsonl").string()).status == 2);
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(folder)) {
+    INFO(e.path().string());
+    CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
+    ++entries;
+  }
+  CHECK(entries == 1);
 }

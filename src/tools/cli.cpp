@@ -1,12 +1,9 @@
 #include "cli.hpp"
 
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "kvd/scene/exact_number.hpp"
@@ -96,25 +93,6 @@ std::array<mpq_class, 3> point_option(const std::string& command, const std::str
     start = comma + 1;
   }
   return p;
-}
-
-void write_atomically(const std::string& command, const std::string& path, const std::string& text) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path temp =
-      target.parent_path() / (target.filename().string() + ".tmp" + std::to_string(getpid()));
-  std::error_code ec;
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!(out << text) || !out.flush()) {
-      std::filesystem::remove(temp, ec);
-      throw Usage_error("kvd " + command + ": cannot write " + path);
-    }
-  }
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw Usage_error("kvd " + command + ": cannot write " + path + " (" + ec.message() + ")");
-  }
 }
 
 std::vector<std::string> comma_list(const std::string& text) {

@@ -110,7 +110,9 @@ mpq_class exact_option(const std::string& command, const std::string& flag, cons
 std::array<mpq_class, 3> point_option(const std::string& command, const std::string& flag, const std::string& text);
 
 // Writes `text` to `path` through a temporary file in the same folder and a
-// rename, so that the file is either complete or untouched.
+// rename, so that the file is either complete or untouched
+// (src/tools/atomic_file.cpp: exclusive, unpredictable, synced, removed on
+// errors and on SIGINT/SIGTERM/SIGHUP).
 void write_atomically(const std::string& command, const std::string& path, const std::string& text);
 
 // The value of an option with named choices ("--queue tree|heap"), E given
