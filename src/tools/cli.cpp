@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <sstream>
 
 #include "kvd/scene/exact_number.hpp"
@@ -108,6 +109,15 @@ unsigned mpfr_bits(const std::string& command, const std::string& bits) {
       std::stoul(bits) < 2 || std::stoul(bits) > 65536)
     throw Usage_error("kvd " + command + ": --kernel mpfr:BITS needs BITS between 2 and 65536");
   return static_cast<unsigned>(std::stoul(bits));
+}
+
+std::function<void(std::size_t, std::size_t)> progress_every_few_seconds(std::string label) {
+  using clock = std::chrono::steady_clock;
+  return [label = std::move(label), last = clock::now()](std::size_t batches, std::size_t failures) mutable {
+    if (clock::now() - last < std::chrono::seconds(2)) return;
+    last = clock::now();
+    std::cerr << label << ": " << batches << " batches, " << failures << " failures\n";
+  };
 }
 
 std::string seconds_since(std::chrono::steady_clock::time_point start) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -160,6 +161,10 @@ auto with_kernel(const std::string& command, const std::string& name, F&& f,
   }
   throw Usage_error("kvd " + command + ": unknown kernel '" + name + "' (exact, double or mpfr:BITS)");
 }
+
+// A progress callback for a long run: "kvd simulate: 1200 batches, 1350
+// failures" on stderr, at most every two seconds (nothing for a short run).
+std::function<void(std::size_t batches, std::size_t failures)> progress_every_few_seconds(std::string label);
 
 // Seconds elapsed since `start`, with microsecond digits ("0.012345").
 std::string seconds_since(std::chrono::steady_clock::time_point start);

@@ -93,9 +93,7 @@ int certify(Args& args) {
   if (!out) throw Usage_error("kvd certify: missing --out FILE (see kvd certify --help)");
   const scene::Scene s = sa.load_scene("certify");
   if (o.until) require_in_span("certify", "--until", *o.until, s);
-  o.progress = [](std::size_t batches, std::size_t failures) {
-    if (batches % 100 == 0) std::cerr << "kvd certify: " << batches << " batches, " << failures << " failures\n";
-  };
+  o.progress = progress_every_few_seconds("kvd certify");
   kinetic::Event_order_recorder recorder;
   const Exact_kernel k;
   const auto sim = with_disjoint_triangles("certify", *sa.path, [&] { return kinetic::simulate(k, s, o, &recorder); });

@@ -132,11 +132,7 @@ int diff(Args& args) {
   }
   if (!kernel) throw Usage_error("kvd diff: missing --kernel double|mpfr:BITS (see kvd diff --help)");
   const scene::Scene s = sa.load_scene("diff");
-  const auto progress = [](const char* which) {
-    return [which](std::size_t batches, std::size_t failures) {
-      if (batches % 100 == 0) std::cerr << "kvd diff: " << which << " run, " << batches << " batches, " << failures << " failures\n";
-    };
-  };
+  const auto progress = [](const char* which) { return progress_every_few_seconds(std::string("kvd diff: ") + which + " run"); };
   // Validate the kernel name before the exact run.
   with_kernel(
       "diff", *kernel,

@@ -321,9 +321,7 @@ int simulate(Args& args) {
                                                                             : kinetic::Update::local);
   const scene::Scene s = sa.load_scene("simulate");
   if (o.until) require_in_span("simulate", "--until", *o.until, s);
-  o.progress = [](std::size_t batches, std::size_t failures) {
-    if (batches % 100 == 0) std::cerr << "kvd simulate: " << batches << " batches, " << failures << " failures\n";
-  };
+  o.progress = progress_every_few_seconds("kvd simulate");
   return with_kernel(
       "simulate", kernel, [&](const auto& k) {
         require_representable(*sa.path, s, k);
