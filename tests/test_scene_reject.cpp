@@ -40,6 +40,9 @@ std::string rejection(const std::string& text, const kvd::scene::Load_options& o
 
 TEST_CASE("the baseline documents of these tests load", "[scene][reject]") {
   CHECK(rejection(doc("[" + tri + "]")) == "");
+  // A UTF-8 byte-order mark is ignored by design; one in the middle is malformed JSON.
+  CHECK(rejection("\xEF\xBB\xBF" + doc("[" + tri + "]")) == "");
+  REJECTED_AT("\xEF\xBB\xBF\xEF\xBB\xBF" + doc("[" + tri + "]"), "malformed JSON", "byte");
   CHECK(rejection(doc("[" + tri + "," + tri_high + "]")) == "");
 }
 

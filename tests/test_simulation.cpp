@@ -269,3 +269,21 @@ TEMPLATE_TEST_CASE("the floating-point kernels reproduce the exact simulation on
     CHECK(fp.structure_hash == exact.structure_hash);
   }
 }
+
+TEST_CASE("a run that meets no more events has reached the end of its span", "[kinetic]") {
+  const Exact_kernel k;
+  // two-triangles (span [0, 10]) up to its last event, then nothing until 10.
+  const auto all = kinetic::simulate(k, load("two-triangles.json"), with(reduced, 1000));
+  CHECK((all.stopped == kinetic::Stop::limit || all.stopped == kinetic::Stop::exhausted));
+  CHECK(k.compare(all.time_reached, Exact_time(mpq_class(10))) == 0);
+  // Stopped by the event limit: the last batch's time, before the end.
+  const auto first = kinetic::simulate(k, load("two-triangles.json"), with(reduced, 1));
+  CHECK(first.stopped == kinetic::Stop::events);
+  CHECK(k.compare(first.time_reached, first.batches.back().time) == 0);
+  CHECK(k.compare(first.time_reached, Exact_time(mpq_class(10))) < 0);
+  // --until: the limit itself.
+  auto o = with(reduced, 1000);
+  o.until = mpq_class(1, 2);
+  const auto until = kinetic::simulate(k, load("two-triangles.json"), o);
+  CHECK(k.compare(until.time_reached, Exact_time(mpq_class(1, 2))) == 0);
+}

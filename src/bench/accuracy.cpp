@@ -82,10 +82,53 @@ std::string csv(const std::vector<Row>& rows) {
   return out;
 }
 
+// What a kernel gets on a scene, in words: "every event, error ≤ 2.43e-16",
+// or "diverges at event 6: 1 missed, 1 followed by another tree; error ≤ ...".
+std::string verdict(const Row& r) {
+  const std::string error = r.d.max_relative_time_error == 0 ? "no time error"
+                                                              : "error ≤ " + cli::scientific(r.d.max_relative_time_error);
+  if (!r.d.first_divergence_event) return "every event, " + error;
+  std::string parts;
+  for (const auto& [n, what] : {std::pair{r.d.missed_events, "missed"}, {r.d.spurious_events, "spurious"},
+                                {r.d.order_mismatches, "out of order"}, {r.d.structure_mismatches, "followed by another tree"}})
+    if (n) parts += (parts.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+  return "diverges at event " + std::to_string(*r.d.first_divergence_event) + (parts.empty() ? "" : ": " + parts) + "; " +
+         error;
+}
+
+// The scenes of stiff/, one row each: the exact events, then each
+// floating-point kernel's verdict (data/stiff/README.md shows this table).
+std::string stiff_table(const std::vector<Row>& rows, const std::vector<std::string>& kernels) {
+  std::vector<std::string> inexact;
+  for (const std::string& k : kernels)
+    if (k != "exact") inexact.push_back(k);
+  std::string out = "\n## The stiff scenes\n\n| scene | exact events |";
+  for (const std::string& k : inexact) out += " " + k + " |";
+  out += "\n|---|---:|";
+  for (std::size_t i = 0; i < inexact.size(); ++i) out += "---|";
+  out += "\n";
+  std::vector<std::string> scenes;
+  for (const Row& r : rows)
+    if (r.scene.rfind("stiff/", 0) == 0 && std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end())
+      scenes.push_back(r.scene);
+  for (const std::string& scene : scenes) {
+    std::string line;
+    std::size_t events = 0;
+    for (const std::string& k : inexact)
+      for (const Row& r : rows)
+        if (r.scene == scene && r.kernel == k) {
+          events = r.events();
+          line += " " + verdict(r) + " |";
+        }
+    out += "| " + scene.substr(6) + " | " + std::to_string(events) + " |" + line + "\n";
+  }
+  return out;
+}
+
 // Per kernel: median seconds per event, the worst relative error, and how
-// many scenes diverged; then the whole table.
+// many scenes diverged; the stiff scenes in words; then the whole table.
 std::string markdown(const std::vector<Row>& rows, const std::vector<std::string>& kernels, std::size_t events) {
-  std::string out = "Per kernel, over " + std::to_string(rows.size() / std::max<std::size_t>(1, kernels.size())) +
+  std::string out = "## Per kernel\n\nPer kernel, over " + std::to_string(rows.size() / std::max<std::size_t>(1, kernels.size())) +
                     " scenes of up to " + std::to_string(events) + " exact events each:\n\n"
                     "| kernel | median ms per event | worst relative time error | scenes diverging | "
                     "events not reproduced | missed | spurious | failed builds repaired |\n"
@@ -111,7 +154,8 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<std::string
            " of " + std::to_string(total) + " | " + std::to_string(missed) + " | " + std::to_string(spurious) + " | " +
            std::to_string(repaired) + " |\n";
   }
-  out += "\nPer scene and kernel:\n\n"
+  out += stiff_table(rows, kernels);
+  out += "\n## Per scene and kernel\n\n"
          "| scene | kernel | events | ms per event | max relative time error | first divergence | "
          "order | missed | spurious | structure |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Row& r : rows)

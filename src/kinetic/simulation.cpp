@@ -144,7 +144,10 @@ public:
       if (o_.progress) o_.progress(sim_.batches.size(), sim_.failures);
     }
     if (o_.validate == Validation::end && before_last && k_.compare(before_last->first, now_) < 0) validate(before_last->first, now_, before_last->second);
-    sim_.time_reached = now_;
+    // A run whose next event lies past the limit, or that has none left, has
+    // certified the tree in force up to the limit.
+    const bool to_limit = sim_.stopped == Stop::limit || sim_.stopped == Stop::exhausted;
+    sim_.time_reached = to_limit && limit_ ? *limit_ : now_;
     sim_.structure_hash = tree::structure_hash(current_);
     return std::move(sim_);
   }

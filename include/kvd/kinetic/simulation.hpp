@@ -119,7 +119,7 @@ struct Simulation {
   Type_counts initial_certificates{};  // by type, for the tree at the start (thesis Figure 8.5)
   Type_counts failures_by_type{};
   double construction_seconds = 0;  // the first tree, its certificates and the queue
-  Time time_reached{};
+  Time time_reached{};  // the last batch's time; the limit when the run stopped there or ran out of events
   std::string structure_hash;            // of the tree in force at the end
   std::optional<std::string> collision;  // triangles meeting: the simulation stops there
   std::vector<Motion_change<Time>> motion_changes;  // the collision responses, in order

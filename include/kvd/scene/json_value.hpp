@@ -29,7 +29,9 @@ inline constexpr int max_depth = 64;
 inline constexpr std::size_t max_file_bytes = std::size_t(64) << 20;
 
 // Parses `text`; on failure returns false and sets `error` (with the byte
-// offset). Strict JSON: one value, nothing after it.
+// offset). Strict JSON: one value, nothing after it. One leading UTF-8
+// byte-order mark is skipped (nlohmann's parser does; RFC 8259 section 8.1
+// allows it), and the format page says so.
 bool parse_json(const std::string& text, Json_value& out, std::string& error);
 
 const char* kind_name(Json_value::Kind k);

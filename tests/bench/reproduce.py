@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""CTest bench_reproduces: every committed non-timing number under data/bench/
+comes out the same in a fresh run, and the pages copy the committed tables.
+
+Usage: reproduce.py KVD SOURCE_DIR WORK_DIR
+
+Re-runs the small cases (the whole accuracy suite, the thesis suite at 25
+triangles, the default update suite), compares each fresh CSV row with the
+committed row of the same key, number by number, and runs splice.py --check.
+Timing quantities differ from run to run and machine to machine and are
+skipped: names ending in _ms or starting with ms_, seconds, the tree and
+certificate shares of the update time, and anything named for memory (rss),
+a ratio, a speed-up or a fitted exponent. Standard library only.
+"""
+import csv
+import pathlib
+import re
+import subprocess
+import sys
+
+TIMING = re.compile(r"(_ms$|^ms_|seconds|^tree_share$|^certificate_share$|rss|ratio|speedup|exponent)")
+
+
+def rows(path, key):
+    with open(path, newline="", encoding="utf-8") as f:
+        return {tuple(r[k] for k in key): r for r in csv.DictReader(f)}
+
+
+def compare(name, committed, fresh, key, long_form=False):
+    """Differences between fresh rows and the committed rows of the same key.
+    long_form: one number per row (the thesis's figure,...,quantity,value)."""
+    old, new = rows(committed, key), rows(fresh, key)
+    problems = []
+    for k, r in new.items():
+        if long_form and TIMING.search(r["quantity"]):
+            continue
+        if k not in old:
+            problems.append(f"{name}: {k} is not in the committed file")
+            continue
+        for column, value in r.items():
+            if not long_form and TIMING.search(column):
+                continue
+            if old[k].get(column) != value:
+                problems.append(f"{name}: {k} {column}: committed {old[k].get(column)!r}, fresh {value!r}")
+    return problems
+
+
+def run(args):
+    subprocess.run(args, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+
+def main():
+    kvd, src, work = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    bench = src / "data" / "bench"
+    data = str(src / "data")
+    problems = []
+    run([kvd, "bench", "accuracy", "--data", data, "--out", str(work / "accuracy")])
+    problems += compare("accuracy.csv", bench / "accuracy.csv", work / "accuracy" / "accuracy.csv", ["scene", "kernel"])
+    run([kvd, "bench", "thesis", "--sizes", "25", "--events", "1000", "--data", data, "--out", str(work / "thesis")])
+    problems += compare("thesis.csv", bench / "thesis.csv", work / "thesis" / "thesis.csv",
+                        ["figure", "family", "size", "kernel", "quantity"], long_form=True)
+    run([kvd, "bench", "update", "--data", data, "--out", str(work / "update")])
+    problems += compare("update.csv", bench / "update.csv", work / "update" / "update.csv", ["scene", "configuration"])
+    if subprocess.run([sys.executable, str(bench / "splice.py"), "--check"]).returncode != 0:
+        problems.append("a page shows a table that differs from data/bench/ (splice.py --check)")
+    for p in problems:
+        print(p)
+    print(f"bench_reproduces: {len(problems)} differences")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
