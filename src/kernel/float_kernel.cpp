@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/numeric_roots.hpp"
 
 namespace kvd {
@@ -18,8 +19,6 @@ std::string as_string(double x) {
   return buf;
 }
 std::string as_string(const Mpfr_number& x) { return x.to_string(17); }
-bool finite(double x) { return std::isfinite(x); }
-bool finite(const Mpfr_number& x) { return mpfr_number_p(x.get()) != 0; }
 
 }  // namespace
 
@@ -45,7 +44,7 @@ std::optional<FT> Float_kernel<FT>::next_root(const Poly& p, const Time& after) 
   const FT bound = cauchy_bound(p);
   // A bound that overflowed gives an infinite "root", which is no instant.
   for (auto& r : sign_change_roots(p, after, bound))
-    if (finite(r) && compare(r, after) > 0) return r;
+    if (is_finite(r) && compare(r, after) > 0) return r;
   return std::nullopt;
 }
 

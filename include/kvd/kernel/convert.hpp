@@ -5,6 +5,8 @@
 
 #include <gmpxx.h>
 
+#include <cmath>
+
 #include "kvd/kernel/mpfr_number.hpp"
 
 namespace kvd {
@@ -25,7 +27,7 @@ double from_rational<double>(const mpq_class& q);  // src/kernel/convert.cpp
 
 // Whether a kernel number is a finite value (not an infinity or a NaN).
 inline bool is_finite(const mpq_class&) { return true; }
-inline bool is_finite(double d) { return d - d == 0; }  // false for inf and NaN
+inline bool is_finite(double d) { return std::isfinite(d); }
 inline bool is_finite(const Mpfr_number& x) { return mpfr_number_p(x.get()) != 0; }
 
 inline mpq_class to_rational(const mpq_class& q) { return q; }
