@@ -25,6 +25,15 @@ inline constexpr int rebuild_instants = 5;
 struct Config {
   std::vector<std::size_t> sizes{25, 50, 100};
   std::size_t events = 200;
+  // Larger scenes get the construction, certificate, BSP and culling
+  // figures only: their simulations and sampled rebuilds take minutes.
+  std::size_t simulate_up_to = 200;
+  std::vector<std::size_t> simulated_sizes() const {
+    std::vector<std::size_t> out;
+    for (std::size_t n : sizes)
+      if (n <= simulate_up_to) out.push_back(n);
+    return out;
+  }
   std::vector<std::string> kernels{"exact", "double"};
   std::string data = "data", out = "bench-out";
   // The kernel of the thesis's figures; the others only in the cost of exactness.
@@ -69,6 +78,8 @@ void construction(const Where& w, const scene::Scene& s, Results& r);
 // certificate failures; with `gain`, also the rebuild costs of equation 8.1
 // over the run's span (figure "gain").
 void simulation(const Where& w, const scene::Scene& s, std::size_t events, bool gain, Results& r);
+// Figure 8.5 alone: the certificates in force at the start.
+void certificates(const Where& w, const scene::Scene& s, Results& r);
 // Figure 8.8: the baseline auto-partition BSP at the scene's start, the median of three.
 void bsp_construction(const Where& w, const scene::Scene& s, Results& r);
 // Figure 8.9: occlusion culling from `viewpoint`, exact.

@@ -109,28 +109,39 @@ void gain_in(const K& k, const Where& w, const scene::Scene& s, const mpq_class&
   std::cerr << "\n";
 }
 
-template <class K>
-void simulation_in(const K& k, const Where& w, const scene::Scene& s, std::size_t events, bool gain, Results& r) {
-  kinetic::Options o;
-  o.max_events = events;
-  o.validate = kinetic::Validation::none;
-  const auto sim = kinetic::simulate(k, s, o);
-
-  // Figure 8.5 is the certificates of the all-moving scenes at the start.
-  Where certificates = w;
-  if (w.figure == "8.6") certificates.figure = "8.5";
+// The certificates in force at the start, by the thesis's groups; returns
+// their number.
+template <class Time>
+double record_certificates(const Where& w, const kinetic::Simulation<Time>& sim, Results& r) {
   using kinetic::Certificate_type;
   const auto count = [&](Certificate_type t) {
     return static_cast<double>(sim.initial_certificates[static_cast<std::size_t>(t)]);
   };
   double total = 0;
   for (std::size_t n : sim.initial_certificates) total += static_cast<double>(n);
-  r.add(certificates, "pp_certificates", count(Certificate_type::VV) + count(Certificate_type::IV) +
-                                             count(Certificate_type::II));
-  r.add(certificates, "ve_certificates", count(Certificate_type::VE));
-  r.add(certificates, "vt_certificates", count(Certificate_type::VT) + count(Certificate_type::TT));
-  r.add(certificates, "et_certificates", count(Certificate_type::ET));
-  r.add(certificates, "certificates", total);
+  r.add(w, "pp_certificates", count(Certificate_type::VV) + count(Certificate_type::IV) + count(Certificate_type::II));
+  r.add(w, "ve_certificates", count(Certificate_type::VE));
+  r.add(w, "vt_certificates", count(Certificate_type::VT) + count(Certificate_type::TT));
+  r.add(w, "et_certificates", count(Certificate_type::ET));
+  r.add(w, "certificates", total);
+  return total;
+}
+
+template <class K>
+auto run(const K& k, const scene::Scene& s, std::size_t events) {
+  kinetic::Options o;
+  o.max_events = events;
+  o.validate = kinetic::Validation::none;
+  return kinetic::simulate(k, s, o);
+}
+
+template <class K>
+void simulation_in(const K& k, const Where& w, const scene::Scene& s, std::size_t events, bool gain, Results& r) {
+  const auto sim = run(k, s, events);
+  // Figure 8.5 is the certificates of the all-moving scenes at the start.
+  Where certificates = w;
+  if (w.figure == "8.6") certificates.figure = "8.5";
+  const double total = record_certificates(certificates, sim, r);
 
   const cli::Update_costs u = cli::update_costs(sim);
   const double n = static_cast<double>(sim.batches.size());
@@ -139,8 +150,7 @@ void simulation_in(const K& k, const Where& w, const scene::Scene& s, std::size_
   r.add(w, "simultaneous_batches", static_cast<double>(sim.simultaneous_batches));
   r.add(w, "time_reached", k.to_double(sim.time_reached));
   if (sim.limit) r.add(w, "time_limit", sim.limit->get_d());
-  const char* const stops[] = {"events", "limit", "exhausted", "collision"};
-  r.add(w, std::string("stopped_by_") + stops[static_cast<int>(sim.stopped)], 1);
+  r.add(w, std::string("stopped_by_") + cli::stop_name(sim.stopped), 1);
   r.add(w, "recovery_detected", static_cast<double>(sim.recovery.detected()));
   r.add(w, "construction_ms", 1000 * sim.construction_seconds);
   r.add(w, "total_update_ms", u.total);
@@ -167,6 +177,13 @@ void construction(const Where& w, const scene::Scene& s, Results& r) {
 void simulation(const Where& w, const scene::Scene& s, std::size_t events, bool gain, Results& r) {
   cli::with_kernel("bench thesis", w.kernel, [&](const auto& k) {
     simulation_in(k, w, s, events, gain, r);
+    return 0;
+  });
+}
+
+void certificates(const Where& w, const scene::Scene& s, Results& r) {
+  cli::with_kernel("bench thesis", w.kernel, [&](const auto& k) {
+    std::cerr << label(w) << record_certificates(w, run(k, s, 0), r) << " certificates at the start\n";
     return 0;
   });
 }

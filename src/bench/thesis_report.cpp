@@ -73,7 +73,8 @@ public:
     for (std::size_t n : c_.sizes) sizes += (sizes.empty() ? "" : ",") + std::to_string(n);
     for (const std::string& k : c_.kernels) kernels += (kernels.empty() ? "" : ",") + k;
     return "# The thesis's Figures 8.4–8.9, ours beside the thesis's\n\n"
-           "`kvd bench thesis --sizes " + sizes + " --events " + std::to_string(c_.events) + " --kernels " + kernels +
+           "`kvd bench thesis --sizes " + sizes + " --events " + std::to_string(c_.events) + " --simulate-up-to " +
+           std::to_string(c_.simulate_up_to) + " --kernels " + kernels +
            "`: one run on this machine (" + std::to_string(std::thread::hardware_concurrency()) +
            " hardware threads). The scenes are `" + c_.data + "/<family>-<N>.json` (all triangles moving "
            "linearly) and, generated in memory as `kvd generate <family> --triangles N --moving F --seed 1` "
@@ -134,7 +135,7 @@ public:
           const auto tree = thesis_value(fig, f, "tree_share", n), cert = thesis_value(fig, f, "certificate_share", n);
           return tree && cert ? *tree + " / " + *cert : dash;
         };
-        out += size_table(f + ", " + moving, c_.sizes,
+        out += size_table(f + ", " + moving, c_.simulated_sizes(),
                           {{"events (batches), how it ended", [=, this](std::size_t n) { return ending(fig, f, n); }},
                            {"construction", ours_thesis(fig, f, "construction_ms", 1)},
                            {"average update", ours_thesis(fig, f, "average_update_ms", 1)},
@@ -202,7 +203,7 @@ public:
       header.push_back("break-even K*");
       std::vector<std::vector<std::string>> rows;
       for (const std::string& f : families)
-        for (std::size_t n : c_.sizes) {
+        for (std::size_t n : c_.simulated_sizes()) {
           const auto q = [&](const std::string& quantity) { return ref("gain", f, n, quantity); };
           const std::string rebuild = std::string(prefix) + "_rebuild_ms";
           std::vector<std::string> row{scene_name(f, n), number(q("span"), 3), number(q("batches"), 0),
@@ -254,7 +255,7 @@ public:
                       "rigid triangle) keeps rounding noise in its coefficients of t, and is made.\n\n";
     std::vector<std::vector<std::string>> rows;
     for (const std::string& f : families)
-      for (std::size_t n : c_.sizes)
+      for (std::size_t n : c_.simulated_sizes())
         for (const std::string& k : c_.kernels) {
           const auto q = [&](const std::string& figure, const std::string& quantity) {
             return get(figure, f, n, k, quantity);
@@ -276,7 +277,7 @@ public:
             header.push_back(std::string(what) + ", exact / " + k);
       rows.clear();
       for (const std::string& f : families)
-        for (std::size_t n : c_.sizes) {
+        for (std::size_t n : c_.simulated_sizes()) {
           std::vector<std::string> row{scene_name(f, n)};
           for (const std::string& k : c_.kernels) {
             if (k == "exact") continue;
@@ -303,7 +304,7 @@ public:
                       "certificate (its polynomials are constants, which are never made).\n\n";
     std::vector<std::vector<std::string>> rows;
     for (const std::string& f : families)
-      for (std::size_t n : c_.sizes) {
+      for (std::size_t n : c_.simulated_sizes()) {
         const auto q = [&](const std::string& figure, const std::string& quantity) {
           return ref(figure, f, n, quantity);
         };
