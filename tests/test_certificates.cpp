@@ -232,7 +232,12 @@ scene::Scene deforming(const Layout& l, int degree, bool moving_w) {
       const auto& r = s.rest[o.first_vertex + i];
       scene::Motion_point mp;
       for (int a = 0; a < 3; ++a) mp[a] = random_poly(g, r[a], degree);
-      mp[3] = moving_w ? random_poly(g, scene::Q(1), degree) : scene::QPoly(scene::Q(1));
+      // A moving W with coefficients >= 0 stays >= 1 for t >= 0: the point
+      // never passes through infinity in the span (the loader checks).
+      scene::QPoly w = moving_w ? random_poly(g, scene::Q(1), degree) : scene::QPoly(scene::Q(1));
+      std::vector<scene::Q> wc = w.coefficients();
+      for (auto& c : wc) c = abs(c);
+      mp[3] = scene::QPoly(std::move(wc));
       o.motion.vertices.push_back(mp);
     }
   }

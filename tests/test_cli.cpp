@@ -121,8 +121,10 @@ TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulat
   for (std::size_t at = r.out.find("\"failing\": "); at != std::string::npos; at = r.out.find("\"failing\": ", at + 1))
     failing += std::stol(r.out.substr(at + 11));
   CHECK(r.out.find("\"events\": " + std::to_string(failing) + ",") != std::string::npos);
-  CHECK(r.out.find("\"collisions\": 0, \"validation_failures\": 0") != std::string::npos);
-  CHECK(r.out.find("\"time_reached_exact\": \"4\"") != std::string::npos);
+  // No failure after the last batch (t = 4): the run has certified the tree up to the span's end.
+  CHECK(r.out.find("\"collisions\": 0, \"stopped\": \"exhausted\", \"validation\": \"every\", \"validations\": 3, "
+                   "\"validation_failures\": 0") != std::string::npos);
+  CHECK(r.out.find("\"time_reached_exact\": \"10\"") != std::string::npos);
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --validate sometimes").status == 2);
   // The trace: one JSON line per failure; the first is the mover's vertex v4
   // = (1,0,1) crossing the E-plane of the floor edge e1 from (4,-4) to (0,4).
@@ -141,7 +143,7 @@ TEST_CASE("kvd simulate reports exact event times and validates", "[cli][simulat
     const Run other = run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --json" + opts);
     CHECK(other.status == 0);
     CHECK(other.out.find("\"batches\": 3,") != std::string::npos);
-    CHECK(other.out.find("\"time_reached_exact\": \"4\"") != std::string::npos);
+    CHECK(other.out.find("\"time_reached_exact\": \"10\"") != std::string::npos);
   }
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --certificates some").status == 2);
   CHECK(run(std::string("simulate ") + KVD_SOURCE_DIR + "/data/two-triangles.json --queue list").status == 2);

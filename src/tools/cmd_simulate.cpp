@@ -68,14 +68,19 @@ const char* const simulate_help =
     "           \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
     "           \"certificates_recomputed\": {\"median\", \"nodes_median\", \"total\"},\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
-    "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT,\n"
+    "           \"stopped\": events|limit|exhausted|collision|stuck, \"validation\": every|end|none,\n"
+    "           \"validations\": N (trees compared with a fresh build),\n"
+    "           \"validation_failures\": N, \"time_reached\": DECIMAL, \"time_reached_exact\": EXACT\n"
+    "           (the last batch's time; the span's end or --until when no event is left before it),\n"
     "           \"structure_hash\": HEX, \"certificates_by_type\": {...}, \"events_by_type\": {...},\n"
     "           \"construction_ms\": X, \"update_ms\": {\"average\", \"max\", \"stddev\",\n"
     "           \"median\", \"tree_median\"},\n"
-    "           \"recovery\": {\"failed_builds\", \"refires\", \"stale_trees\", \"rebuilds\", \"unrepaired\"},\n"
+    "           \"recovery\": {\"failed_builds\", \"refires\", \"stale_trees\", \"rebuilds\", \"zones_skipped\",\n"
+    "           \"unrepaired\"},\n"
     "           \"tree_update_share\": X, \"certificate_update_share\": X}\n"
     "\n"
-    "Exit status: 0 on success, 1 on a failed validation, 2 on bad input.\n";
+    "Exit status: 0 on success, 1 on a failed validation or a floating-point run\n"
+    "stuck at one instant, 2 on bad input.\n";
 
 // The canonical isolating interval of an exact time; a floating-point time
 // is its own.
