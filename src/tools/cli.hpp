@@ -12,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -89,16 +90,23 @@ tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
   return with_disjoint_triangles(command, path, [&] { return tree::build(classifier, t); });
 }
 
+// The kernel as --kernel names it: "exact", "double", "mpfr:256".
+template <class K>
+std::string kernel_label(const K& k) {
+  if constexpr (std::is_same_v<K, Mpfr_kernel>) return "mpfr:" + std::to_string(k.bits());
+  else return K::name;
+}
+
 // Scene_error naming the first number of the scene that K's coefficient
 // field cannot hold (1e400 is infinite in double); the exact kernel holds all.
 template <class K>
-void require_representable(const std::string& path, const scene::Scene& s, const K&) {
+void require_representable(const std::string& path, const scene::Scene& s, const K& k) {
   using FT = typename K::FT;
   const auto bad = scene::first_number(s, [](const scene::Q& q) { return !is_finite(from_rational<FT>(q)); });
   if (!bad) return;
   throw scene::Scene_error(path + ": " + bad->place + ": " +
                            (bad->power ? "the coefficient of t^" + std::to_string(bad->power) + ", " : "") + "about " +
-                           Mpfr_number(bad->value).to_string(5) + ", is not a finite number in the " + K::name +
+                           Mpfr_number(bad->value).to_string(5) + ", is not a finite number in the " + kernel_label(k) +
                            " kernel; use --kernel exact or mpfr:BITS");
 }
 

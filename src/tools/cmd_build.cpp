@@ -50,14 +50,14 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
   if (tree_only) {
     std::cout << t.describe();
   } else if (json) {
-    std::cout << "{\"kernel\": " << json_string(K::name) << ", \"time\": " << json_string(time.get_str())
+    std::cout << "{\"kernel\": " << json_string(kernel_label(k)) << ", \"time\": " << json_string(time.get_str())
               << ", \"vertices\": " << s.rest.size() << ", \"edges\": " << s.edges.size()
               << ", \"triangles\": " << s.triangles.size() << ", \"p_nodes\": " << st.p_nodes
               << ", \"e_nodes\": " << st.e_nodes << ", \"t_nodes\": " << st.t_nodes << ", \"nodes\": " << st.nodes
               << ", \"height\": " << st.height << ", \"seconds\": " << secs
               << ", \"structure_hash\": " << json_string(tree::structure_hash(t)) << "}\n";
   } else {
-    std::cout << "kernel:    " << K::name << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
+    std::cout << "kernel:    " << kernel_label(k) << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
               << "\nedges:     " << s.edges.size() << "\ntriangles: " << s.triangles.size()
               << "\nP-nodes:   " << st.p_nodes << "\nE-nodes:   " << st.e_nodes << "\nT-nodes:   " << st.t_nodes
               << "\nnodes:     " << st.nodes << "\nheight:    " << st.height << "\nseconds:   " << secs

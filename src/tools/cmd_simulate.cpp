@@ -186,7 +186,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const Recomputed recomputed = certificates_recomputed(sim);
   const std::size_t collisions = sim.motion_changes.size() + (sim.collision ? 1 : 0);
   if (json) {
-    std::cout << "{\"kernel\": " << json_string(K::name) << ", \"certificate_set\": " << json_string(set)
+    std::cout << "{\"kernel\": " << json_string(kernel_label(k)) << ", \"certificate_set\": " << json_string(set)
               << ", \"queue\": " << json_string(queue) << ", \"batch_list\": [";
     for (std::size_t i = 0; i < sim.batches.size(); ++i) {
       const auto& e = sim.batches[i];
@@ -239,7 +239,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                       << (e.changed ? "changed" : "unchanged") << ", " << e.certificates_recomputed
                       << " certificates recomputed\n";
           });
-    std::cout << "kernel:        " << K::name << ", " << set << " certificates, " << queue << " queue, " << update
+    std::cout << "kernel:        " << kernel_label(k) << ", " << set << " certificates, " << queue << " queue, " << update
               << " update\n"
               << "events:        " << sim.failures << " certificate failures in " << sim.batches.size() << " batches ("
               << sim.simultaneous_batches << " simultaneous)\n"
@@ -267,7 +267,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   }
   if (sim.collision) std::cerr << "kvd simulate: " << *sim.collision << "\n";
   if (sim.stopped == kinetic::Stop::stuck) {
-    std::cerr << "kvd simulate: the " << K::name << " run repeats a batch at t = " << approx(k.to_double(sim.time_reached))
+    std::cerr << "kvd simulate: the " << kernel_label(k) << " run repeats a batch at t = " << approx(k.to_double(sim.time_reached))
               << " without advancing, and no repair moved past it: stopped\n";
     return 1;
   }
