@@ -3,7 +3,7 @@ set datafile missing 'NaN'
 kernels = 'exact double'
 families = 'uniform-scale uniform-density'
 set logscale xy
-set xtics (25, 50, 100)
+set xtics (25, 50, 100, 200, 400, 800)
 set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 set grid
 set key top left
