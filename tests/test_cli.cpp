@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -353,4 +354,23 @@ TEST_CASE("outputs are written whole or not at all, and leave no temporary file"
     ++entries;
   }
   CHECK(entries == 1);
+}
+
+TEST_CASE("every command in kvd's table answers --help", "[cli]") {
+  const std::string usage = run("--help").out;
+  const std::size_t from = usage.find("commands:\n"), to = usage.find("\noptions:");
+  REQUIRE(from != std::string::npos);
+  REQUIRE(to != std::string::npos);
+  std::istringstream lines(usage.substr(from + 10, to - from - 10));
+  std::size_t commands = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty()) continue;
+    const std::string name = line.substr(2, line.find(' ', 2) - 2);
+    INFO(name);
+    const Run help = run(name + " --help");
+    CHECK(help.status == 0);
+    CHECK(help.out.rfind("usage: kvd " + name, 0) == 0);
+    ++commands;
+  }
+  CHECK(commands >= 9);
 }

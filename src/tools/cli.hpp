@@ -180,14 +180,5 @@ std::string seconds_since(std::chrono::steady_clock::time_point start);
 // JSON string literal for s (quotes and escapes).
 std::string json_string(const std::string& s);
 
-int info(Args& args);
-int generate(Args& args);
-int build(Args& args);
-int order(Args& args);
-int render(Args& args);
-int simulate(Args& args);
-int certify(Args& args);
-int diff(Args& args);
-int bench(Args& args);
 
 }  // namespace kvd::cli
