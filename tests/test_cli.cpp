@@ -374,3 +374,34 @@ TEST_CASE("every command in kvd's table answers --help", "[cli]") {
   }
   CHECK(commands >= 9);
 }
+
+TEST_CASE("kvd import: a mesh becomes a scene that info and build agree on", "[cli][import]") {
+  const std::string meshes = std::string(KVD_SOURCE_DIR) + "/data/meshes/";
+  const std::string out = std::string(KVD_BINARY_DIR) + "/two-cubes.json";
+  CHECK(run("import " + meshes + "two-cubes.obj --translate right=-1/4,0,0 --rotate left=0,0,1/4 --end 2 -o " + out).status == 0);
+  const auto info = nlohmann::json::parse(run("info " + out + " --json").out);
+  CHECK(info["objects"] == 2);
+  CHECK(info["vertices"] == 16);
+  CHECK(info["triangles"] == 24);
+  CHECK(info["moving_triangles"] == 24);
+  CHECK(info["max_motion_degree"] == 2);
+  const auto built = nlohmann::json::parse(run("build " + out + " --json").out);
+  CHECK(built["triangles"] == 24);
+  CHECK(built["p_nodes"] == 16);
+  // Standard output, and a static mesh.
+  const Run tetra = run("import " + meshes + "tetrahedron.off");
+  CHECK(tetra.status == 0);
+  CHECK(tetra.out.find("\"format\": \"kvd-scene/1\"") != std::string::npos);
+  // Bad meshes, intersecting objects and bad usage: status 2, nothing written.
+  const std::string bad = scene_file("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+  const std::string crossing = scene_file("crossing.obj",
+      "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 1 1 -1\nv 1 1 1\nv 3 3 0\no a\nf 1 2 3\no b\nf 4 5 6\n");
+  const std::string never = std::string(KVD_BINARY_DIR) + "/never-written.json";
+  std::filesystem::remove(never);
+  CHECK(run("import " + bad + " -o " + never).status == 2);
+  CHECK(run("import " + crossing + " -o " + never).status == 2);
+  CHECK(run("import " + meshes + "two-cubes.obj --translate nobody=1,0,0 -o " + never).status == 2);
+  CHECK(run("import " + meshes + "two-cubes.obj --translate 1,0,0 --rotate 0,0,1 -o " + never).status == 2);
+  CHECK(run("import " + meshes + "missing.obj").status == 2);
+  CHECK_FALSE(std::filesystem::exists(never));
+}

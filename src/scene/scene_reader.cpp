@@ -305,7 +305,7 @@ Scene read_scene(const std::string& text, const std::string& source, const Load_
   return Reader(source).read(doc, options);
 }
 
-Scene load_scene(const std::string& path, const Load_options& options) {
+std::string read_input(const std::string& path) {
   const std::string name = path == "-" ? "(stdin)" : path;
   std::error_code ec;
   if (path != "-") {
@@ -328,7 +328,11 @@ Scene load_scene(const std::string& path, const Load_options& options) {
       throw Scene_error(name + ": larger than " + std::to_string(max_file_bytes >> 20) + " MiB; refused");
   }
   if (in.bad()) throw Scene_error(name + ": cannot read the file");
-  return read_scene(text, name, options);
+  return text;
+}
+
+Scene load_scene(const std::string& path, const Load_options& options) {
+  return read_scene(read_input(path), path == "-" ? "(stdin)" : path, options);
 }
 
 }  // namespace kvd::scene

@@ -15,7 +15,8 @@
   X(simulate, "SCENE", "run the kinetic KVD (exact events, symbolic batches)")             \
   X(certify, "SCENE", "write an event-order certificate of the exact simulation")          \
   X(diff, "SCENE", "compare a floating-point simulation with the exact one")               \
-  X(bench, "SUITE", "benchmarks: accuracy, thesis, update (kvd bench --help)")
+  X(bench, "SUITE", "benchmarks: accuracy, thesis, update (kvd bench --help)")       \
+  X(import, "MESH", "an OBJ or OFF mesh as a scene, read exactly")
 
 namespace kvd::cli {
 

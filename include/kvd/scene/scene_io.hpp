@@ -33,6 +33,9 @@ struct Load_options {
 
 Scene read_scene(const std::string& text, const std::string& source, const Load_options& options = {});
 Scene load_scene(const std::string& path, const Load_options& options = {});
+// The bytes of a file (or of standard input for "-"), at most 64 MiB;
+// Scene_error naming it when it is missing, a folder, unreadable or larger.
+std::string read_input(const std::string& path);
 // The scene as a `kvd-scene/1` document; numbers are written as exact strings.
 // read_scene(write_scene(s)) == s.
 std::string write_scene(const Scene& s);
