@@ -35,6 +35,11 @@ TEST_CASE("mesh import: the bundled meshes read exactly, quads split into fans",
   }
   // Negative indices count back from the last vertex read: the right cube's first corner is v9.
   CHECK(cubes[1].vertices[0] == QPoint{{Q(3, 2), Q(1, 4), Q(1, 4), Q(1)}});
+  const auto pyramid = read_mesh(read_input(source("pyramid.ply")), "pyramid.ply");
+  REQUIRE(pyramid.size() == 1);
+  CHECK(pyramid[0].vertices.size() == 5);
+  CHECK(pyramid[0].triangles.size() == 6);  // the quad base split in two
+  CHECK(pyramid[0].vertices[4][2] == Q(5, 4));
   const auto octahedron = read_mesh(read_input(source("octahedron.off")), "octahedron.off");
   REQUIRE(octahedron.size() == 1);
   CHECK(octahedron[0].vertices.size() == 6);
@@ -79,7 +84,19 @@ TEST_CASE("mesh import: malformed meshes are rejected with their line", "[mesh]"
   CHECK(rejection("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\nextra\n", "a.off") ==
         "a.off: line 7: unexpected text after the last face");
   CHECK(rejection("OFF\nthree 1 0\n", "a.off").find("line 2: expected the number of vertices") != std::string::npos);
-  CHECK(rejection(tri, "a.ply") == "a.ply: unknown mesh format (expected a .obj or .off file)");
+  CHECK(rejection(tri, "a.stl") == "a.stl: unknown mesh format (expected a .obj, .off or .ply file)");
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                           "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n";
+  CHECK(rejection(head + points + "3 0 1 2\n", "a.ply") == "");
+  CHECK(rejection("ply\nformat binary_little_endian 1.0\n", "a.ply").find("line 2: only ASCII PLY") != std::string::npos);
+  CHECK(rejection(head + points + "3 0 1\n", "a.ply") == "a.ply: line 13: a face declares 3 corners and lists 2");
+  CHECK(rejection(head + points + "3 0 1 5\n", "a.ply").find("line 13: vertex index 5 out of range") != std::string::npos);
+  CHECK(rejection(head + "0 0\n", "a.ply") == "a.ply: line 10: a vertex has 3 values");
+  CHECK(rejection(head + points, "a.ply") == "a.ply: line 12: the file ends early");
+  CHECK(rejection(head + points + "3 0 1 2\n9\n", "a.ply") == "a.ply: line 14: unexpected text after the last element");
+  CHECK(rejection("ply\nformat ascii 1.0\nelement vertex x\n", "a.ply").find("line 3: expected the number of elements") !=
+        std::string::npos);
 }
 
 TEST_CASE("mesh import: the rotation about the centroid is rigid and keeps the centroid", "[mesh]") {

@@ -1,5 +1,6 @@
 #include "kvd/scene/mesh_io.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -31,6 +32,13 @@ public:
     const auto q = parse_exact_number(text[0] == '+' ? text.substr(1) : text, why);
     if (!q) fail(why + ": \"" + (text.size() > 40 ? text.substr(0, 40) + "..." : text) + "\"");
     return *q;
+  }
+
+  // A count ("the number of WHAT") from its text: digits only, below 10^9.
+  std::size_t count_of(const std::string& t, const char* what) const {
+    if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 9)
+      fail(std::string("expected the number of ") + what + ", found \"" + t + "\"");
+    return static_cast<std::size_t>(std::stoul(t));
   }
 
   // A 0-based index from its text; `count` is how many there are so far.
@@ -112,12 +120,7 @@ public:
       line_ = tokens[at].second;
       return tokens[at++].first;
     };
-    const auto count = [&](const char* what) {
-      const std::string& t = next();
-      if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 9)
-        fail(std::string("expected the number of ") + what + ", found \"" + t + "\"");
-      return static_cast<std::size_t>(std::stoul(t));
-    };
+    const auto count = [&](const char* what) { return count_of(next(), what); };
     if (next() != "OFF") fail("an OFF file starts with 'OFF'");
     const std::size_t nv = count("vertices"), nf = count("faces");
     count("edges");
@@ -137,6 +140,76 @@ public:
     if (at < tokens.size()) {
       line_ = tokens[at].second;
       fail("unexpected text after the last face");
+    }
+    return finish();
+  }
+
+  // ASCII PLY: the header declares elements and their properties; the data
+  // has one line per element instance. Only vertex x, y, z and the faces'
+  // index list are used; other elements and properties are skipped.
+  std::vector<Mesh_object> ply(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    const auto next_line = [&]() -> std::vector<std::string> {
+      if (!std::getline(in, line)) fail("the file ends early");
+      ++line_;
+      std::istringstream ws(line);
+      std::vector<std::string> w;
+      for (std::string x; ws >> x;) w.push_back(x);
+      return w;
+    };
+    if (next_line() != std::vector<std::string>{"ply"}) fail("a PLY file starts with 'ply'");
+    struct Element {
+      std::string name;
+      std::size_t count = 0;
+      std::vector<std::string> properties;  // names; a list property is "list:NAME"
+    };
+    std::vector<Element> elements;
+    for (;;) {
+      const auto w = next_line();
+      if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
+      if (w[0] == "end_header") break;
+      if (w[0] == "format") {
+        if (w.size() < 2 || w[1] != "ascii") fail("only ASCII PLY is read (convert a binary one to ASCII)");
+      } else if (w[0] == "element" && w.size() == 3) {
+        elements.push_back({w[1], count_of(w[2], "elements"), {}});
+      } else if (w[0] == "property" && !elements.empty() && w.size() == 3) {
+        elements.back().properties.push_back(w[2]);
+      } else if (w[0] == "property" && !elements.empty() && w.size() == 5 && w[1] == "list") {
+        elements.back().properties.push_back("list:" + w[4]);
+      } else {
+        fail("unexpected header line \"" + line + "\"");
+      }
+    }
+    for (const Element& e : elements) {
+      const auto at = [&](const std::string& name) {
+        const auto it = std::find(e.properties.begin(), e.properties.end(), name);
+        return it == e.properties.end() ? e.properties.size() : static_cast<std::size_t>(it - e.properties.begin());
+      };
+      for (std::size_t i = 0; i < e.count; ++i) {
+        const auto w = next_line();
+        if (e.name == "vertex") {
+          const std::size_t x = at("x"), y = at("y"), z = at("z");
+          if (x == e.properties.size() || y == e.properties.size() || z == e.properties.size())
+            fail("vertices need the properties x, y and z");
+          if (w.size() != e.properties.size()) fail("a vertex has " + std::to_string(e.properties.size()) + " values");
+          vertices_.push_back({{number(w[x]), number(w[y]), number(w[z]), Q(1)}});
+        } else if (e.name == "face") {
+          // The index list must be the face's first property.
+          if (e.properties.empty() || (e.properties[0] != "list:vertex_indices" && e.properties[0] != "list:vertex_index"))
+            fail("a face's first property must be the list vertex_indices");
+          if (w.empty()) fail("an empty face line");
+          const std::size_t k = count_of(w[0], "corners of a face");
+          if (w.size() != k + 1) fail("a face declares " + w[0] + " corners and lists " + std::to_string(w.size() - 1));
+          std::vector<std::size_t> corners;
+          for (std::size_t c = 1; c <= k; ++c) corners.push_back(index(w[c], vertices_.size(), false));
+          face(corners);
+        }
+      }
+    }
+    while (std::getline(in, line)) {
+      ++line_;
+      if (!words(line).empty()) fail("unexpected text after the last element");
     }
     return finish();
   }
@@ -180,7 +253,8 @@ std::vector<Mesh_object> read_mesh(const std::string& text, const std::string& s
   Mesh_reader r(source);
   if (ends_with(source, ".obj")) return r.obj(text);
   if (ends_with(source, ".off")) return r.off(text);
-  throw Scene_error(source + ": unknown mesh format (expected a .obj or .off file)");
+  if (ends_with(source, ".ply")) return r.ply(text);
+  throw Scene_error(source + ": unknown mesh format (expected a .obj, .off or .ply file)");
 }
 
 Scene mesh_scene(const std::vector<Mesh_object>& objects, const std::string& name) {

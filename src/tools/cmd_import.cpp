@@ -1,4 +1,4 @@
-// kvd import MESH: an OBJ or OFF mesh as a kvd-scene/1 scene, read exactly.
+// kvd import MESH: an OBJ, OFF or ASCII PLY mesh as a kvd-scene/1 scene, read exactly.
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -12,13 +12,14 @@ namespace kvd::cli {
 
 namespace {
 const char* const import_help =
-    "usage: kvd import MESH.obj|MESH.off [-o SCENE.json] [--translate [NAME=]VX,VY,VZ]...\n"
+    "usage: kvd import MESH.obj|.off|.ply [-o SCENE.json] [--translate [NAME=]VX,VY,VZ]...\n"
     "                  [--rotate [NAME=]UX,UY,UZ]... [--end T] [--seed S] [--name TEXT]\n"
     "\n"
     "Writes the mesh as a kvd-scene/1 scene (to stdout, or atomically to SCENE).\n"
     "Coordinates are read exactly: every decimal is the rational it spells.\n"
     "OBJ 'o' and 'g' lines start objects (vertices are shared across the file;\n"
-    "each object keeps those its faces use); an OFF file is one object.\n"
+    "each object keeps those its faces use); an OFF or ASCII PLY file is one\n"
+    "object.\n"
     "Polygons are split into fans from their first corner. The scene is\n"
     "checked as kvd info checks it (triangles of different objects, or folded\n"
     "ones, must not intersect) before anything is written.\n"

@@ -1,4 +1,4 @@
-// Triangle meshes from OBJ and OFF files, read exactly: every coordinate is
+// Triangle meshes from OBJ, OFF and ASCII PLY files, read exactly: every coordinate is
 // the rational its decimal text spells (the scene format's number grammar,
 // with a leading '+' also allowed), never rounded through double. Polygons
 // are split into fans from their first corner; a fan that folds over itself
@@ -19,8 +19,8 @@ struct Mesh_object {
   std::vector<std::array<std::size_t, 3>> triangles;
 };
 
-// Reads `text` as OBJ (objects from `o` and `g` lines) or OFF (one object),
-// chosen by `source`'s extension (.obj, .off). Scene_error "SOURCE: line N:
+// Reads `text` as OBJ (objects from `o` and `g` lines), OFF or ASCII PLY
+// (one object each), chosen by `source`'s extension (.obj, .off, .ply). Scene_error "SOURCE: line N:
 // what" for anything malformed: an unknown statement, a bad number or
 // index, a face of fewer than three corners, a repeated corner.
 std::vector<Mesh_object> read_mesh(const std::string& text, const std::string& source);
