@@ -1,10 +1,16 @@
-#include <cairo.h>
-
+// PNG pictures through cairo, when the build found it (KVD_HAVE_CAIRO).
 #include <stdexcept>
 
 #include "kvd/query/render.hpp"
 
+#ifdef KVD_HAVE_CAIRO
+#include <cairo.h>
+#endif
+
 namespace kvd::query {
+
+#ifdef KVD_HAVE_CAIRO
+bool png_supported() { return true; }
 
 namespace {
 
@@ -50,5 +56,12 @@ std::string to_png(const std::vector<Painted_polygon>& picture, const Render_opt
   if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(cairo_status_to_string(status));
   return bytes;
 }
+#else
+bool png_supported() { return false; }
+
+std::string to_png(const std::vector<Painted_polygon>&, const Render_options&) {
+  throw std::logic_error("this build of kvd has no PNG output (cairo was not found)");
+}
+#endif
 
 }  // namespace kvd::query

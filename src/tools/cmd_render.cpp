@@ -54,6 +54,8 @@ int render(Args& args) {
   };
   const bool png = out && ends_with(*out, ".png");
   if (out && !png && !ends_with(*out, ".svg")) throw Usage_error("kvd render: --out must name an .svg or .png file");
+  if (png && !query::png_supported())
+    throw Usage_error("kvd render: this build has no PNG output (cairo was not found when it was built); use .svg");
   const mpq_class t = sa.time ? *sa.time : s.start;
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);

@@ -1,11 +1,11 @@
 #include "kvd/tree/compare.hpp"
 
-#include <openssl/evp.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <tuple>
+
+#include "kvd/tree/digest.hpp"
 
 namespace kvd::tree {
 
@@ -67,20 +67,7 @@ std::string canonical_serialisation(const Kvd_tree& t) {
   return out;
 }
 
-std::string structure_hash(const Kvd_tree& t) {
-  const std::string s = canonical_serialisation(t);
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  if (EVP_Digest(s.data(), s.size(), digest, &length, EVP_sha256(), nullptr) != 1)
-    throw std::runtime_error("SHA-256 failed");
-  std::string hex;
-  char byte[3];
-  for (unsigned int i = 0; i < length; ++i) {
-    std::snprintf(byte, sizeof byte, "%02x", digest[i]);
-    hex += byte;
-  }
-  return hex;
-}
+std::string structure_hash(const Kvd_tree& t) { return sha256_hex(canonical_serialisation(t)); }
 
 std::optional<std::string> first_difference(const Kvd_tree& a, const Kvd_tree& b) {
   std::vector<std::tuple<int, int, std::string>> stack{{a.root, b.root, "root"}};

@@ -40,5 +40,7 @@ std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c
 std::string to_svg(const std::vector<Painted_polygon>& picture, const Render_options& options);
 // The PNG file's bytes (drawn with cairo).
 std::string to_png(const std::vector<Painted_polygon>& picture, const Render_options& options);
+// Whether this build writes PNG (cairo is optional; SVG is always there).
+bool png_supported();
 
 }  // namespace kvd::query
