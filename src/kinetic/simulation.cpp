@@ -117,8 +117,8 @@ public:
         now_ = *next;
         break;
       }
-      batch.tree_seconds = seconds_since(tree_start);
       batch.changed = tree::first_difference(current_, *after).has_value();
+      batch.tree_seconds = seconds_since(tree_start);
       sim_.failures += batch.failures();
       sim_.simultaneous_batches += batch.failures() >= 2;
       for (const Failure& f : batch.failing) ++sim_.failures_by_type[static_cast<std::size_t>(f.type)];
@@ -139,7 +139,9 @@ public:
         }
       }
       batch.certificate_seconds = seconds_since(cert_start);
+      const auto record_start = std::chrono::steady_clock::now();
       batch.structure = tree::structure_hash(current_);
+      batch.record_seconds = seconds_since(record_start);
       sim_.batches.push_back(std::move(batch));
       if (o_.progress) o_.progress(sim_.batches.size(), sim_.failures);
     }
