@@ -137,7 +137,7 @@ public:
   bool key(string_t& k) override {
     Json_value& obj = *stack_.back();
     if (obj.find(k)) return fail(place(stack_.size() - 1) + "/" + pointer_token(k) + ": duplicate key \"" + k + "\"");
-    obj.members.emplace_back(std::move(k), Json_value{});
+    obj.members.push_back({std::move(k), Json_value{}});
     return true;
   }
   bool end_object() override { return close(); }

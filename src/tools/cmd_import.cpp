@@ -86,15 +86,15 @@ int import(Args& args) {
     }
     if (!found) throw Usage_error("kvd import: " + flag + " names no object \"" + target + "\"");
   };
-  for (const auto& [target, v] : translations)
-    apply("--translate", target, [&](std::size_t) {
+  for (const auto& t : translations)
+    apply("--translate", t.first, [&](std::size_t) {
       scene::Motion m;
       m.kind = scene::Motion::Kind::translation;
-      for (std::size_t a = 0; a < 3; ++a) m.translation[a] = scene::QPoly({scene::Q(0), v[a]});
+      for (std::size_t a = 0; a < 3; ++a) m.translation[a] = scene::QPoly({scene::Q(0), t.second[a]});
       return m;
     });
-  for (const auto& [target, u] : rotations)
-    apply("--rotate", target, [&](std::size_t o) { return scene::rotation_about_centroid(s, o, u); });
+  for (const auto& r : rotations)
+    apply("--rotate", r.first, [&](std::size_t o) { return scene::rotation_about_centroid(s, o, r.second); });
   s.derive();
   // The loader's checks, intersections among them, on exactly what is written.
   const std::string text = scene::write_scene(s);

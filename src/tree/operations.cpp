@@ -102,7 +102,7 @@ std::size_t Tree_editor<K>::touched() const {
 // its side, and on the other side its two subtrees lie in one cell, which
 // its cut no longer divides: they are merged.
 template <class K>
-std::pair<int, int> Tree_editor<K>::split_tree(int t, const SP& plane) {
+std::pair<int, int> Tree_editor<K>::split_tree(int t, SP plane) {
   if (t < 0) return {-1, -1};
   const SP cut = node(t).cut;
   auto [neg, pos] = split_.split(node(t).fragment, plane, cut);
@@ -123,7 +123,7 @@ std::pair<int, int> Tree_editor<K>::split_tree(int t, const SP& plane) {
 }
 
 template <class K>
-int Tree_editor<K>::merge(int t1, int t2, const SP& between) {
+int Tree_editor<K>::merge(int t1, int t2, SP between) {
   if (t1 < 0) return t2;
   if (t2 < 0) return t1;
   if (priority(t1) == priority(t2)) {  // one site, its two pieces meeting across `between`
@@ -145,7 +145,7 @@ int Tree_editor<K>::merge(int t1, int t2, const SP& between) {
 }
 
 template <class K>
-int Tree_editor<K>::insert(int t, const SP& cut, Fragment f) {
+int Tree_editor<K>::insert(int t, SP cut, Fragment f) {
   if (t < 0) return make(Node{cut, std::move(f)});
   if (priority(t) < cut_priority(s_, cut)) {
     auto [neg, pos] = split_.split(f, node(t).cut, cut);

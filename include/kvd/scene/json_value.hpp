@@ -19,9 +19,17 @@ struct Json_value {
   bool boolean = false;
   std::string text;  // a number's raw text, or a string's value
   std::vector<Json_value> items;                          // array
-  std::vector<std::pair<std::string, Json_value>> members;  // object, in file order
+  // A key and its value. Declared here, defined below: a std::pair of an
+  // incomplete type may not be instantiated, a vector of one may (C++17).
+  struct Member;
+  std::vector<Member> members;  // object, in file order
 
   const Json_value* find(const std::string& key) const;
+};
+
+struct Json_value::Member {
+  std::string first;  // the key
+  Json_value second;  // its value
 };
 
 inline constexpr int max_depth = 64;

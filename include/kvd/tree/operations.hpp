@@ -37,6 +37,9 @@ void sort_by_priority(const scene::Scene& s, std::vector<Symbolic_plane>& sites)
 // Every site of the scene, in construction order.
 std::vector<Symbolic_plane> sites_in_priority_order(const scene::Scene& s);
 
+// The planes are taken by value: the operations add nodes, and a reference
+// to a node's cut would dangle once the node array grows (AddressSanitizer
+// found merge passing one).
 template <class K>
 class Tree_editor {
 public:
@@ -44,11 +47,11 @@ public:
 
   // The trees on the negative and positive side of `plane`, the plane of a
   // site of higher priority than every node of subtree t.
-  std::pair<int, int> split_tree(int t, const Symbolic_plane& plane);
+  std::pair<int, int> split_tree(int t, Symbolic_plane plane);
   // One tree from t1 and t2, the trees of the two sides of `between`.
-  int merge(int t1, int t2, const Symbolic_plane& between);
+  int merge(int t1, int t2, Symbolic_plane between);
   // Subtree t with the site `cut` (fragment f, inside t's cell) added.
-  int insert(int t, const Symbolic_plane& cut, Fragment f);
+  int insert(int t, Symbolic_plane cut, Fragment f);
   // Subtree n without node n.
   int drag(int n);
 
