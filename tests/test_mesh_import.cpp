@@ -108,7 +108,7 @@ TEST_CASE("mesh import: the rotation about the centroid is rigid and keeps the c
     for (int i = 0; i < 3; ++i) d += (a[i] / a[3] - b[i] / b[3]) * (a[i] / a[3] - b[i] / b[3]);
     return d;
   };
-  for (const Q t : {Q(0), Q(1, 3), Q(1), Q(-5, 2), Q(7)}) {
+  for (const Q& t : {Q(0), Q(1, 3), Q(1), Q(-5, 2), Q(7)}) {
     Q centroid[3] = {0, 0, 0};
     for (std::size_t v = 0; v < 4; ++v) {
       const QPoint p = s.position_at(v, t);
