@@ -171,8 +171,19 @@ TEST_CASE("kvd certify writes the file whole, or not at all on bad input", "[cli
   CHECK(r.out.find("8 events in 3 batches") != std::string::npos);
   std::ifstream f(out);
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  CHECK(text.rfind("{\n\"format\": \"kvd-event-order/1\"", 0) == 0);
+  CHECK(text.rfind("{\n\"format\": \"kvd-event-order/2\"", 0) == 0);
   CHECK(text.find("\"motion_changes\": []\n}\n") != std::string::npos);
+  // Through collisions: the four contacts of collisions.json become motion
+  // changes; with --collisions stop the run ends at the first.
+  const std::string collisions = std::string(KVD_SOURCE_DIR) + "/data/collisions.json";
+  const Run reversed = run("certify " + collisions + " --events 200 --out " + out);
+  CHECK(reversed.status == 0);
+  CHECK(reversed.out.find("4 motion changes") != std::string::npos);
+  const Run stopped = run("certify " + collisions + " --collisions stop --out " + out);
+  CHECK(stopped.status == 0);
+  CHECK(stopped.out.find("0 motion changes") != std::string::npos);
+  CHECK(stopped.out.find("stopped by collision") != std::string::npos);
+  CHECK(run("certify " + collisions + " --collisions bounce --out " + out).status == 2);
 }
 
 TEST_CASE("kvd diff compares kernels event by event; divergence exits 0, bad input 2", "[cli][diff]") {

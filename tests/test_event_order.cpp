@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <numeric>
 
 #include "kvd/kinetic/event_order.hpp"
 #include "kvd/scene/scene_io.hpp"
@@ -65,4 +66,55 @@ TEST_CASE("event order: isolating intervals, multiplicities and order agree with
     previous_hi = e.hi;
   }
   if (!order.events.empty()) CHECK(batch + 1 == sim.batches.size());
+}
+
+TEST_CASE("event order through collisions: each motion change fails where CGAL says, after its reversal",
+          "[certify][collision]") {
+  // data/collisions.json: contacts at exactly 2, 3, 4 and 6 (proofs/collision_response.md).
+  kinetic::Options o;
+  o.max_events = 200;
+  o.validate = kinetic::Validation::none;
+  kinetic::Event_order_recorder recorder;
+  const auto sim = kinetic::simulate(Exact_kernel(), load("collisions.json"), o, &recorder);
+  const kinetic::Event_order order = recorder.take();
+
+  REQUIRE(order.motion_changes.size() == sim.motion_changes.size());
+  // One interval from the start, one after every batch and every motion change.
+  CHECK(order.intervals.size() == 1 + sim.batches.size() + sim.motion_changes.size());
+  const std::vector<int> contacts{2, 3, 4, 6};
+  for (std::size_t i = 0; i < order.motion_changes.size(); ++i) {
+    const auto& c = order.motion_changes[i];
+    const auto& s = sim.motion_changes[i];
+    INFO("motion change " << i);
+    CHECK(c.time == s.time);
+    CHECK(c.objects == s.objects);
+    CHECK(c.motions == s.motions);
+    CHECK(c.after_events == std::accumulate(sim.batches.begin(), sim.batches.begin() + s.batches_before, std::size_t{0},
+                                            [](std::size_t n, const auto& b) { return n + b.failures(); }));
+    REQUIRE(!c.failing.empty());
+    for (const auto& f : c.failing) {
+      const auto& p = order.certificates.at(f.certificate).polynomial;
+      const oracle::Cgal_roots roots(p);
+      const std::size_t r = only_root(roots, f.lo, f.hi);
+      CHECK(roots.multiplicity(r) == f.multiplicity);
+      CHECK(roots.compare(r, mpq_class(contacts[i])) == 0);  // the contact
+      CHECK(roots.compare(r, c.time) > 0);                  // after the reversal
+      // Made of the motions before the change, and in force up to it.
+      CHECK(order.certificates[f.certificate].motions == i);
+    }
+    // The reversal comes after the last event before it.
+    if (c.after_events > 0) {
+      const auto& e = order.events[c.after_events - 1];
+      const oracle::Cgal_roots roots(order.certificates[e.certificate].polynomial);
+      CHECK(roots.compare(only_root(roots, e.lo, e.hi), c.time) < 0);
+    }
+  }
+  // Every certificate in force after change i is made of the motions after it.
+  std::size_t interval = 0;
+  kinetic::in_run_order(
+      sim, [&](std::size_t c) {
+        ++interval;
+        for (std::size_t id : order.intervals[interval]) CHECK(order.certificates[id].motions == c + 1);
+      },
+      [&](std::size_t) { ++interval; });
 }

@@ -21,8 +21,8 @@ std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_tim
   }
 }
 
-std::string key(const std::string& features, const zpoly::ZPoly& p) {
-  std::string k = features;
+std::string key(const std::string& features, const zpoly::ZPoly& p, std::size_t motions) {
+  std::string k = features + " @" + std::to_string(motions);
   for (const auto& c : p) k += " " + c.get_str();
   return k;
 }
@@ -30,8 +30,9 @@ std::string key(const std::string& features, const zpoly::ZPoly& p) {
 }  // namespace
 
 std::size_t Event_order_recorder::id(Certificate_type type, const std::string& features, const zpoly::ZPoly& p) {
-  const auto [it, fresh] = ids_.try_emplace(key(features, p), order_.certificates.size());
-  if (fresh) order_.certificates.push_back({type, features, p});
+  const std::size_t motions = order_.motion_changes.size();
+  const auto [it, fresh] = ids_.try_emplace(key(features, p, motions), order_.certificates.size());
+  if (fresh) order_.certificates.push_back({type, features, p, motions});
   return it->second;
 }
 
@@ -48,24 +49,34 @@ void Event_order_recorder::in_force(const Exact_time&, const std::vector<Certifi
   order_.intervals.push_back(std::move(active));
 }
 
+Event_order::Root Event_order_recorder::root(const Failure& f, const Exact_time& t) const {
+  const auto it = current_.find(f.nodes);
+  if (it == current_.end()) throw std::logic_error("event of a certificate not in force: " + f.nodes);
+  // The certificate's polynomial that vanishes at t.
+  const auto vanishes = [&](std::size_t i) {
+    return k_.sign_at(zpoly::to_poly(order_.certificates[i].polynomial), t) == 0;
+  };
+  const auto which = std::find_if(it->second.begin(), it->second.end(), vanishes);
+  if (which == it->second.end()) throw std::logic_error("no polynomial of " + f.nodes + " vanishes at its event");
+  const zpoly::ZPoly& p = order_.certificates[*which].polynomial;
+  const auto [lo, hi] = isolating(p, t);
+  int multiplicity = 0;
+  for (zpoly::ZPoly d = p; k_.sign_at(zpoly::to_poly(d), t) == 0; d = zpoly::derivative(d)) ++multiplicity;
+  return {*which, lo, hi, multiplicity};
+}
+
 void Event_order_recorder::batch(const Batch<Exact_time>& b, bool collision) {
   bool first = true;
   for (const Failure& f : b.failing) {
-    const auto it = current_.find(f.nodes);
-    if (it == current_.end()) throw std::logic_error("event of a certificate not in force: " + f.nodes);
-    // The certificate's polynomial that vanishes at the batch time.
-    const auto vanishes = [&](std::size_t i) {
-      return k_.sign_at(zpoly::to_poly(order_.certificates[i].polynomial), b.time) == 0;
-    };
-    const auto which = std::find_if(it->second.begin(), it->second.end(), vanishes);
-    if (which == it->second.end()) throw std::logic_error("no polynomial of " + f.nodes + " vanishes at its event");
-    const zpoly::ZPoly& p = order_.certificates[*which].polynomial;
-    const auto [lo, hi] = isolating(p, b.time);
-    int multiplicity = 0;
-    for (zpoly::ZPoly d = p; k_.sign_at(zpoly::to_poly(d), b.time) == 0; d = zpoly::derivative(d)) ++multiplicity;
-    order_.events.push_back({*which, lo, hi, multiplicity, !first, collision});
+    order_.events.push_back({root(f, b.time), !first, collision});
     first = false;
   }
+}
+
+void Event_order_recorder::reversal(const Reversal<Exact_time>& r) {
+  Event_order::Motion_change change{order_.events.size(), r.time, {}, r.objects, r.motions, r.contact};
+  for (const Failure& f : r.collision.failing) change.failing.push_back(root(f, r.collision.time));
+  order_.motion_changes.push_back(std::move(change));
 }
 
 }  // namespace kvd::kinetic

@@ -105,7 +105,7 @@ public:
       Time at = *next;
       std::optional<tree::Kvd_tree> after;
       if (!failing_contact(*next)) after = local() ? update_locally(at, batch) : build_at(at);
-      if (!after && respond(*next)) {
+      if (!after && respond(*next, batch)) {
         if (o_.validate == Validation::end) before_last.reset();  // the tree in force now has new motions
         continue;
       }
@@ -413,7 +413,7 @@ private:
   // instant before any batch reverses its other objects at the same r.
   // False when the run stops instead: Collisions::stop, an unknown contact,
   // or a contact of objects already reversed for this instant.
-  bool respond(const Time& collision) {
+  bool respond(const Time& collision, const Batch<Time>& batch) {
     if (o_.collisions != Collisions::reverse) return false;
     std::vector<std::size_t> objects = met_;
     std::erase_if(objects, [&](std::size_t o) { return !scene_.is_moving(o); });  // reversing changes nothing
@@ -431,8 +431,10 @@ private:
     if (again) sim_.motion_changes.back().contact += "; " + build_error_;
     else sim_.motion_changes.push_back({*r, collision, {}, {}, sim_.batches.size(), build_error_});
     Motion_change<Time>& record = sim_.motion_changes.back();
+    Reversal<Time> step{*r, batch, objects, {}, build_error_};
     for (std::size_t o : objects) {
       scene_.objects[o].motion = scene::reversed(scene_.objects[o].motion, *r);
+      step.motions.push_back(scene_.objects[o].motion);
       const auto at = std::ranges::upper_bound(record.objects, o) - record.objects.begin();
       record.objects.insert(record.objects.begin() + at, o);
       record.motions.insert(record.motions.begin() + at, scene_.objects[o].motion);
@@ -447,7 +449,7 @@ private:
       record.tree_changed |= tree::first_difference(current_, *after).has_value();
       current_ = std::move(*after);
     }
-    if (observer_) observer_->motion_change(record);
+    if (observer_) observer_->reversal(step);
     make_certificates();
     return true;
   }

@@ -70,6 +70,11 @@ kinetic::Validation validation_option(const std::string& command, const std::str
   return choice_option<V>(command, "--validate", value, {validations[0], validations[1], validations[2]});
 }
 
+kinetic::Collisions collisions_option(const std::string& command, const std::string& value) {
+  return choice_option<kinetic::Collisions>(command, "--collisions", value,
+                                            {{"reverse", kinetic::Collisions::reverse}, {"stop", kinetic::Collisions::stop}});
+}
+
 const char* validation_name(kinetic::Validation v) {
   for (const auto& [name, value] : validations)
     if (value == v) return name;

@@ -142,6 +142,9 @@ E choice_option(const std::string& command, const std::string& flag, const std::
 
 // every, end or none, given to --validate.
 kinetic::Validation validation_option(const std::string& command, const std::string& value);
+// The value of --collisions: reverse or stop.
+kinetic::Collisions collisions_option(const std::string& command, const std::string& value);
+
 // The option value that names v ("every").
 const char* validation_name(kinetic::Validation v);
 

@@ -11,20 +11,25 @@ namespace kvd::cli {
 namespace {
 const char* const certify_help =
     "usage: kvd certify SCENE --out FILE [--events N] [--until T] [--seed S]\n"
-    "                   [--validate every|end|none] [--allow-intersecting]\n"
+    "                   [--collisions reverse|stop] [--validate every|end|none]\n"
+    "                   [--allow-intersecting]\n"
     "\n"
     "Runs the exact kinetic KVD (reduced certificates, as kvd simulate) and\n"
     "writes an event-order certificate to FILE: the scene, every certificate\n"
-    "polynomial in force between consecutive event times, and every event with\n"
-    "an interval isolating its time, its multiplicity and its order relation to\n"
-    "the event before. proofs/check-certificate FILE verifies it independently.\n"
-    "Format: proofs/event-order-certificate.md. Triangles that meet stop the run\n"
-    "there (the format has no motion changes yet; kvd simulate reverses them).\n"
+    "polynomial in force between consecutive instants, every event with an\n"
+    "interval isolating its time, its multiplicity and its order relation to\n"
+    "the event before, and every motion change: triangles about to meet have\n"
+    "their motions reversed (X-collide) at a rational time before the contact,\n"
+    "and the file holds the contact, that time and the new motions.\n"
+    "proofs/check-certificate FILE verifies it independently.\n"
+    "Format: proofs/event-order-certificate.md.\n"
     "\n"
-    "  --events N     stop after the batch holding the N-th failure (default 100)\n"
-    "  --until T      stop after the last batch at a time <= T (exact)\n"
-    "  --validate V   check the tree against fresh builds: every, end or none\n"
-    "                 (default none; the certificate does not rely on it)\n"
+    "  --events N       stop after the batch or motion change that reaches N\n"
+    "                   failures, or N motion changes (default 100)\n"
+    "  --until T        stop after the last batch at a time <= T (exact)\n"
+    "  --collisions C   reverse (default), or stop at the first contact\n"
+    "  --validate V     check the tree against fresh builds: every, end or none\n"
+    "                   (default none; the certificate does not rely on it)\n"
     "\n"
     "FILE is written completely or not at all. Exit status: 0 on success, 1 on a\n"
     "failed validation (nothing written), 2 on bad input.\n";
@@ -35,38 +40,57 @@ std::string integers(const zpoly::ZPoly& p) {
   return out + "]";
 }
 
-std::string ids(const std::vector<std::size_t>& v) {
+template <class T, class Show>
+std::string array(const std::vector<T>& v, Show show) {
   std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + std::to_string(v[i]);
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + show(v[i]);
   return out + "]";
 }
 
 std::string document(const scene::Scene& s, const kinetic::Event_order& order, const std::optional<mpq_class>& end,
                      const char* stopped_by) {
+  using Order = kinetic::Event_order;
   auto kind_features = [&](std::size_t id) {
     const auto& c = order.certificates[id];
     return "\"kind\": " + json_string(kinetic::to_string(c.type)) + ", \"features\": " + json_string(c.features) +
            ", \"polynomial\": " + integers(c.polynomial);
   };
-  std::string out = "{\n\"format\": \"kvd-event-order/1\",\n\"scene\": " + scene::write_scene(s) +
-                    ",\n\"certificate_set\": \"reduced\",\n\"start\": " + json_string(s.start.get_str()) +
-                    ",\n\"end\": " + (end ? json_string(end->get_str()) : "null") +
-                    ",\n\"stopped_by\": " + json_string(stopped_by) + ",\n\"certificates\": [";
-  for (std::size_t i = 0; i < order.certificates.size(); ++i) out += (i ? ",\n " : "\n ") + ("{" + kind_features(i) + "}");
-  out += "\n],\n\"events\": [";
-  for (std::size_t i = 0; i < order.events.size(); ++i) {
+  auto root = [&](const Order::Root& r) {
+    return "\"certificate\": " + std::to_string(r.certificate) + ", " + kind_features(r.certificate) +
+           ", \"interval\": [" + json_string(r.lo.get_str()) + ", " + json_string(r.hi.get_str()) +
+           "], \"multiplicity\": " + std::to_string(r.multiplicity);
+  };
+  const auto number = [](std::size_t i) { return std::to_string(i); };
+  // One item per line: "[\n a,\n b\n]", or "[]".
+  const auto lines = [](std::size_t n, const auto& item) {
+    if (n == 0) return std::string("[]");
+    std::string out = "[";
+    for (std::size_t i = 0; i < n; ++i) out += (i ? ",\n " : "\n ") + item(i);
+    return out + "\n]";
+  };
+  const auto certificate = [&](std::size_t i) {
+    return "{" + kind_features(i) + ", \"motions\": " + std::to_string(order.certificates[i].motions) + "}";
+  };
+  const auto event = [&](std::size_t i) {
     const auto& e = order.events[i];
-    out += (i ? ",\n " : "\n ") + ("{\"certificate\": " + std::to_string(e.certificate) + ", " +
-                                   kind_features(e.certificate) + ", \"interval\": [" + json_string(e.lo.get_str()) +
-                                   ", " + json_string(e.hi.get_str()) + "], \"multiplicity\": " +
-                                   std::to_string(e.multiplicity) + ", \"order\": \"" +
-                                   (e.equal_to_previous ? "=" : "<") + "\", \"collision\": " +
-                                   (e.collision ? "true" : "false") + "}");
-  }
-  out += "\n],\n\"intervals\": [";
-  for (std::size_t i = 0; i < order.intervals.size(); ++i)
-    out += (i ? ",\n " : "\n ") + ("{\"active\": " + ids(order.intervals[i]) + "}");
-  return out + "\n],\n\"motion_changes\": []\n}\n";
+    return "{" + root(e) + ", \"order\": \"" + (e.equal_to_previous ? "=" : "<") +
+           "\", \"collision\": " + (e.collision ? "true" : "false") + "}";
+  };
+  const auto interval = [&](std::size_t i) { return "{\"active\": " + array(order.intervals[i], number) + "}"; };
+  const auto change = [&](std::size_t i) {
+    const auto& c = order.motion_changes[i];
+    return "{\"after_events\": " + std::to_string(c.after_events) + ", \"time\": " + json_string(c.time.get_str()) +
+           ", \"failing\": " + array(c.failing, [&](const Order::Root& r) { return "{" + root(r) + "}"; }) +
+           ", \"objects\": " + array(c.objects, number) + ", \"motions\": " + array(c.motions, scene::write_motion) +
+           ", \"contact\": " + json_string(c.contact) + "}";
+  };
+  return "{\n\"format\": \"kvd-event-order/2\",\n\"scene\": " + scene::write_scene(s) +
+         ",\n\"certificate_set\": \"reduced\",\n\"start\": " + json_string(s.start.get_str()) +
+         ",\n\"end\": " + (end ? json_string(end->get_str()) : "null") + ",\n\"stopped_by\": " + json_string(stopped_by) +
+         ",\n\"certificates\": " + lines(order.certificates.size(), certificate) +
+         ",\n\"events\": " + lines(order.events.size(), event) +
+         ",\n\"intervals\": " + lines(order.intervals.size(), interval) +
+         ",\n\"motion_changes\": " + lines(order.motion_changes.size(), change) + "\n}\n";
 }
 
 }  // namespace
@@ -75,8 +99,6 @@ int certify(Args& args) {
   Scene_args sa;
   kinetic::Options o;
   o.validate = kinetic::Validation::none;
-  // Format kvd-event-order/1 has no motion changes yet: the run stops at a collision.
-  o.collisions = kinetic::Collisions::stop;
   std::optional<std::string> out;
   while (!args.done()) {
     const std::string& a = args.next();
@@ -87,6 +109,7 @@ int certify(Args& args) {
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--until") o.until = exact_option("certify", a, args.value(a));
     else if (a == "--out") out = args.value(a);
+    else if (a == "--collisions") o.collisions = collisions_option("certify", args.value(a));
     else if (a == "--validate") o.validate = validation_option("certify", args.value(a));
     else if (a == "--json" || !sa.take(args, a)) args.unknown(a);
   }
@@ -122,7 +145,8 @@ int certify(Args& args) {
   std::size_t batches = 0;
   for (const auto& e : order.events) batches += !e.equal_to_previous;
   std::cout << "kvd certify: " << order.events.size() << " events in " << batches << " batches, "
-            << order.certificates.size() << " certificate polynomials, stopped by " << stopped_by
+            << order.motion_changes.size() << " motion changes, " << order.certificates.size()
+            << " certificate polynomials, stopped by " << stopped_by
             << (sim.collision ? " (" + *sim.collision + ")" : "") << "; wrote " << *out << "\n";
   return 0;
 }

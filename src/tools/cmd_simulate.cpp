@@ -314,9 +314,7 @@ int simulate(Args& args) {
       o.upkeep = choice_option<kinetic::Upkeep>(
           "simulate", a, args.value(a), {{"local", kinetic::Upkeep::local}, {"all", kinetic::Upkeep::all}});
     else if (a == "--collisions")
-      o.collisions = choice_option<kinetic::Collisions>(
-          "simulate", a, args.value(a),
-          {{"reverse", kinetic::Collisions::reverse}, {"stop", kinetic::Collisions::stop}});
+      o.collisions = collisions_option("simulate", args.value(a));
     else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
     else if (!sa.take(args, a)) args.unknown(a);
   }

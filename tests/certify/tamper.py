@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write a tampered copy of an event-order certificate (kvd-event-order/1).
+"""Write a tampered copy of an event-order certificate (kvd-event-order/2).
 
 Usage: tamper.py IN TAMPERING OUT
        tamper.py --list
@@ -24,7 +24,8 @@ deterministic (the first place in the file where the tampering applies):
   drop-event         the first batch that has an interval after it is
                      deleted; its two neighbouring intervals are merged,
                      keeping the active list of the earlier one (which holds
-                     the certificates that fail at the deleted time).
+                     the certificates that fail at the deleted time); later
+                     motion changes keep their place among the other events.
   change-polynomial  the constant term of one certificate polynomial changes
                      by the smallest of +1, -1, +2, -2, ... that keeps it
                      primitive and distinct, in the certificates table and in
@@ -37,6 +38,16 @@ deterministic (the first place in the file where the tampering applies):
                      are the first, in file order, for which the recomputed
                      polynomial (without perturbation) stays non-zero and is
                      no longer a constant multiple of the listed one.
+  shift-reversal     the first motion change's reversal time moves earlier,
+                     by 1/64 of the gap to the event before it (at most 1); the
+                     new motions stay those reversed at the old time.
+  late-contact       the first motion change's contact becomes a later root
+                     of another certificate in force before the change: the
+                     first of them, in the interval's order, with a root
+                     isolated after the contact's interval. The real contact
+                     is then a failure before the claimed one.
+  unreversed-motion  the first motion change's first object keeps the motion
+                     it had before (the scene's) instead of the reversed one.
 
 Exit status: 0 written; 3 the tampering does not apply to this file (for
 example, no events); 2 usage error or unreadable input.
@@ -50,7 +61,7 @@ from fractions import Fraction
 from math import gcd
 
 TAMPERINGS = ["swap-order", "move-root", "claim-equal", "drop-certificate", "drop-event", "change-polynomial",
-              "move-vertex"]
+              "move-vertex", "shift-reversal", "late-contact", "unreversed-motion"]
 
 
 class NotApplicable(Exception):
@@ -181,6 +192,23 @@ class Sturm:
             stack.append((lo, mid))
         out.sort()
         return out
+
+    def first_root_after(self, x):
+        """A closed isolating interval of the least root greater than x, within (x, +inf); None if none."""
+        p = self.p
+        if len(p) < 2:
+            return None
+        hi = max(x, Fraction(0)) + 1 + max(abs(c / p[-1]) for c in p[:-1])
+        lo = x
+        if self.count_half_open(lo, hi) == 0:
+            return None
+        while self.count_half_open(lo, hi) > 1:
+            mid = (lo + hi) / 2
+            if self.count_half_open(lo, mid) >= 1:
+                hi = mid
+            else:
+                lo = mid
+        return self.tighten(lo, hi)
 
     def tighten(self, lo, hi):
         """From (lo, hi] holding one root to a closed interval holding exactly that root."""
@@ -426,29 +454,92 @@ def claim_equal(doc):
     raise NotApplicable("no \"<\" after the first event")
 
 
+def instants(doc):
+    """The run order of batches and motion changes: ("batch", first event) or ("change", index)."""
+    out = []
+    changes = doc["motion_changes"]
+    j = 0
+    for members in batches_of(doc["events"]):
+        while j < len(changes) and changes[j]["after_events"] <= members[0]:
+            out.append(("change", j))
+            j += 1
+        out.append(("batch", members[0]))
+    out.extend(("change", k) for k in range(j, len(changes)))
+    return out
+
+
 def drop_certificate(doc):
     ev = doc["events"]
     if not ev:
         raise NotApplicable("no events")
     c = ev[0]["certificate"]
-    act = doc["intervals"][0]["active"]
+    k = instants(doc).index(("batch", 0))  # the interval that ends at event 0
+    act = doc["intervals"][k]["active"]
     if c not in act:
-        raise NotApplicable("the input is already invalid: certificate %d not active on interval 0" % c)
+        raise NotApplicable("the input is already invalid: certificate %d not active on interval %d" % (c, k))
     act.remove(c)
-    return "interval 0: certificate %d removed" % c
+    return "interval %d: certificate %d removed" % (k, c)
 
 
 def drop_event(doc):
     ev = doc["events"]
-    bs = batches_of(ev)
     ivs = doc["intervals"]
-    for b, members in enumerate(bs):
-        if b + 1 < len(ivs):
+    order = instants(doc)
+    for b, members in enumerate(batches_of(ev)):
+        k = order.index(("batch", members[0]))
+        if k + 1 < len(ivs):
             doc["events"] = [e for i, e in enumerate(ev) if i not in set(members)]
-            del ivs[b + 1]
+            del ivs[k + 1]
+            for c in doc["motion_changes"]:
+                if c["after_events"] > members[0]:
+                    c["after_events"] -= len(members)
             return "batch %d (events %d..%d) deleted, intervals %d and %d merged" % (
-                b, members[0], members[-1], b, b + 1)
+                b, members[0], members[-1], k, k + 1)
     raise NotApplicable("no batch with an interval after it")
+
+
+def first_change(doc):
+    if not doc["motion_changes"]:
+        raise NotApplicable("no motion changes")
+    return doc["motion_changes"][0]
+
+
+def shift_reversal(doc):
+    c = first_change(doc)
+    r = rat(c["time"])
+    before = rat(doc["events"][c["after_events"] - 1]["interval"][1]) if c["after_events"] else rat(doc["start"])
+    if before >= r:
+        raise NotApplicable("the previous event's interval reaches the reversal time")
+    shifted = r - min(Fraction(1), (r - before) / 64)
+    c["time"] = fmt(shifted)
+    return "motion change 0: reversal time %s -> %s, motions kept" % (fmt(r), fmt(shifted))
+
+
+def late_contact(doc):
+    c = first_change(doc)
+    contact_hi = rat(c["failing"][0]["interval"][1])
+    k = instants(doc).index(("change", 0))
+    for cid in doc["intervals"][k]["active"]:
+        cert = doc["certificates"][cid]
+        st = Sturm([int(x) for x in cert["polynomial"]])
+        later = st.first_root_after(contact_hi)
+        if later:
+            a, b = later
+            c["failing"] = [{"certificate": cid, "kind": cert["kind"], "features": cert["features"],
+                             "polynomial": cert["polynomial"], "interval": [fmt(a), fmt(b)], "multiplicity": 1}]
+            return "motion change 0: the contact is now certificate %d at [%s, %s], after the real one" % (
+                cid, fmt(a), fmt(b))
+    raise NotApplicable("no certificate in force before the change has a root after the contact")
+
+
+def unreversed_motion(doc):
+    c = first_change(doc)
+    o = c["objects"][0]
+    before = doc["scene"]["objects"][o].get("motion")
+    if before is None:
+        raise NotApplicable("object %d had no motion" % o)
+    c["motions"][0] = before
+    return "motion change 0: object %d keeps its motion instead of reversing it" % o
 
 
 def change_polynomial(doc):
@@ -513,7 +604,8 @@ def move_vertex(doc):
 
 ACTIONS = {"swap-order": swap_order, "move-root": move_root, "claim-equal": claim_equal,
            "drop-certificate": drop_certificate, "drop-event": drop_event,
-           "change-polynomial": change_polynomial, "move-vertex": move_vertex}
+           "change-polynomial": change_polynomial, "move-vertex": move_vertex, "shift-reversal": shift_reversal,
+           "late-contact": late_contact, "unreversed-motion": unreversed_motion}
 
 
 def main(argv):

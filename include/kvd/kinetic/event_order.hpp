@@ -17,6 +17,7 @@
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/zpoly.hpp"
 #include "kvd/kinetic/simulation.hpp"
+#include "kvd/scene/scene.hpp"
 
 namespace kvd::kinetic {
 
@@ -25,33 +26,54 @@ struct Event_order {
     Certificate_type type;
     std::string features;
     zpoly::ZPoly polynomial;  // primitive, positive where the certificate is in force
+    std::size_t motions;      // the motions it is made of: 0 the scene's, k those after motion change k - 1
   };
-  struct Event {
+  // A certificate failing at an instant: its id and an interval isolating the instant.
+  struct Root {
     std::size_t certificate;  // into `certificates`
     mpq_class lo, hi;         // the closed interval holds exactly one distinct root of the polynomial
     int multiplicity;
-    bool equal_to_previous;   // "=", else "<"
+  };
+  struct Event : Root {
+    bool equal_to_previous;  // "=", else "<"
     bool collision;
   };
-  std::vector<Entry> certificates;  // one per distinct (type, features, polynomial)
+  // X-collide: `objects` take their new `motions` (reversed) at the rational
+  // `time`, before the instant at which `failing` fail, where they touch.
+  struct Motion_change {
+    std::size_t after_events;  // the events processed before it
+    mpq_class time;
+    std::vector<Root> failing;  // the batch at the instant of contact, not processed
+    std::vector<std::size_t> objects;
+    std::vector<scene::Motion> motions;
+    std::string contact;  // which features met, in words
+  };
+  std::vector<Entry> certificates;  // one per distinct (type, features, polynomial, motions)
   std::vector<Event> events;
-  std::vector<std::vector<std::size_t>> intervals;  // the ids in force, from the start and after each batch
+  // The ids in force from the start, after each batch and after each motion change.
+  std::vector<std::vector<std::size_t>> intervals;
+  std::vector<Motion_change> motion_changes;
 };
 
-// Records an exact simulation as an Event_order: pass it to simulate().
+// Records an exact simulation as an Event_order: pass it to simulate(). A
+// reversal that adds objects at the instant of the previous one is a motion
+// change of its own, at the same time.
 class Event_order_recorder : public Observer<Exact_kernel> {
 public:
   void in_force(const Exact_time& now, const std::vector<Certificate<Exact_kernel::Poly>>& certs) override;
   void batch(const Batch<Exact_time>& b, bool collision) override;
+  void reversal(const Reversal<Exact_time>& r) override;
   // The record; the recorder is spent.
   Event_order take() { return std::move(order_); }
 
 private:
   std::size_t id(Certificate_type type, const std::string& features, const zpoly::ZPoly& p);
+  // The failure of the certificate in force named `f` at t.
+  Event_order::Root root(const Failure& f, const Exact_time& t) const;
 
   Exact_kernel k_;
   Event_order order_;
-  std::map<std::string, std::size_t> ids_;  // by features and coefficients
+  std::map<std::string, std::size_t> ids_;  // by features, coefficients and motions
   std::map<std::string, std::vector<std::size_t>> current_;  // the ids in force, by features
 };
 

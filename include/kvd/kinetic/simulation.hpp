@@ -159,18 +159,32 @@ struct Options {
   std::function<void(std::size_t batches, std::size_t failures)> progress;
 };
 
+// One step of a collision response, as an observer sees it: `objects`
+// (increasing) reversed at `time`, with their new `motions`, because of
+// `contact`, found among the failures of `collision`, the batch at the
+// instant of contact, which is not processed. A second contact at the same
+// instant is a second step at the same time, with the objects it adds.
+template <class Time>
+struct Reversal {
+  mpq_class time;
+  Batch<Time> collision;
+  std::vector<std::size_t> objects;
+  std::vector<scene::Motion> motions;
+  std::string contact;
+};
+
 // Sees what a simulation relies on, in order: the certificates put in force
 // at the start, then for every batch the batch (before its update) and the
-// certificates in force after it. A motion change comes before the
-// certificates of the new motions. A batch at which triangles meet and the
-// run stops comes with collision = true and is the last call.
+// certificates in force after it. A reversal comes before the certificates
+// of the new motions. A batch at which triangles meet and the run stops
+// comes with collision = true and is the last call.
 template <class K>
 class Observer {
 public:
   virtual ~Observer() = default;
   virtual void in_force(const typename K::Time& now, const std::vector<Certificate<typename K::Poly>>& certs) = 0;
   virtual void batch(const Batch<typename K::Time>& b, bool collision) = 0;
-  virtual void motion_change(const Motion_change<typename K::Time>&) {}
+  virtual void reversal(const Reversal<typename K::Time>&) {}
 };
 
 // Runs from the scene's start until its end or `until`, no events are left,
