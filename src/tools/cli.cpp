@@ -116,12 +116,13 @@ unsigned mpfr_bits(const std::string& command, const std::string& bits) {
   return static_cast<unsigned>(std::stoul(bits));
 }
 
-std::function<void(std::size_t, std::size_t)> progress_every_few_seconds(std::string label) {
+std::function<void(std::size_t, std::size_t)> progress_every_few_seconds(std::string label, std::string of) {
   using clock = std::chrono::steady_clock;
-  return [label = std::move(label), last = clock::now()](std::size_t batches, std::size_t failures) mutable {
+  return [label = std::move(label), of = std::move(of), last = clock::now()](std::size_t a, std::size_t b) mutable {
     if (clock::now() - last < std::chrono::seconds(2)) return;
     last = clock::now();
-    std::cerr << label << ": " << batches << " batches, " << failures << " failures\n";
+    if (of.empty()) std::cerr << label << ": " << a << " batches, " << b << " failures\n";
+    else std::cerr << label << ": " << a << " of " << b << " " << of << "\n";
   };
 }
 

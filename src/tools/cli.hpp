@@ -174,8 +174,10 @@ auto with_kernel(const std::string& command, const std::string& name, F&& f,
 }
 
 // A progress callback for a long run: "kvd simulate: 1200 batches, 1350
-// failures" on stderr, at most every two seconds (nothing for a short run).
-std::function<void(std::size_t batches, std::size_t failures)> progress_every_few_seconds(std::string label);
+// failures" on stderr, at most every two seconds (nothing for a short run);
+// with `of`, a count of a total instead: "kvd view: 12 of 40 intervals".
+std::function<void(std::size_t batches, std::size_t failures)> progress_every_few_seconds(std::string label,
+                                                                                         std::string of = "");
 
 // Seconds elapsed since `start`, with microsecond digits ("0.012345").
 std::string seconds_since(std::chrono::steady_clock::time_point start);

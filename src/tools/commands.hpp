@@ -16,7 +16,8 @@
   X(certify, "SCENE", "write an event-order certificate of the exact simulation")          \
   X(diff, "SCENE", "compare a floating-point simulation with the exact one")               \
   X(bench, "SUITE", "benchmarks: accuracy, thesis, update (kvd bench --help)")       \
-  X(import, "MESH", "an OBJ, OFF or PLY mesh as a scene, read exactly")
+  X(import, "MESH", "an OBJ, OFF or PLY mesh as a scene, read exactly")                  \
+  X(view, "SCENE", "an interactive HTML page of a run (3D, timeline, tree, diff)")
 
 namespace kvd::cli {
 

@@ -1,0 +1,130 @@
+// kvd view SCENE|REPORT --out FILE.html: an interactive page of a run.
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "page_data.hpp"
+
+namespace kvd::cli {
+
+namespace {
+const char* const view_help =
+    "usage: kvd view SCENE|REPORT --out FILE.html [--events N] [--until T]\n"
+    "                [--view X,Y,Z] [--seed S] [--collisions reverse|stop]\n"
+    "\n"
+    "Runs the exact kinetic KVD (as kvd simulate, validating every batch) and\n"
+    "writes one self-contained HTML page, which works offline:\n"
+    "  * the triangles in 3D (drag to orbit, wheel to zoom), cut into the\n"
+    "    fragments of the tree in force, with the cells' walls shown or hidden\n"
+    "    by kind (P red, E green, T blue);\n"
+    "  * a timeline of the batches and motion changes: clicking one shows the\n"
+    "    tree just after it, its exact time, the failing certificates with\n"
+    "    their features marked in red, and the nodes it changed;\n"
+    "  * the tree itself as a collapsible outline.\n"
+    "Each interval of the run is drawn at a rational instant inside it.\n"
+    "\n"
+    "REPORT is the output of kvd diff --json: the page then also lists the exact\n"
+    "and the floating-point events side by side, with the first divergence\n"
+    "marked. The run is the report's scene (its path as written there, from the\n"
+    "current folder or else from the report's) over the report's exact events.\n"
+    "\n"
+    "  --events N      stop after the batch holding the N-th failure (default 100)\n"
+    "  --until T       stop after the last batch at a time <= T (exact)\n"
+    "  --view X,Y,Z    the camera's first position (default: in front, above)\n"
+    "\n"
+    "The page holds three.js (MIT licence, Debian's libjs-three) and the data.\n"
+    "FILE is written completely or not at all. Exit status: 0 on success, 1 on a\n"
+    "failed validation (nothing written), 2 on bad input.\n";
+
+// A kvd diff --json report, or nothing when `path` holds something else.
+std::optional<nlohmann::json> diff_report(const std::string& path) {
+  const std::string text = scene::read_input(path);
+  const auto j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("first_divergence_event")) return std::nullopt;
+  for (const char* key : {"scene", "kernel", "events", "spurious", "events_compared"})
+    if (!j.contains(key)) throw Usage_error("kvd view: " + path + ": a kvd diff report without \"" + key + "\"");
+  if (!j["scene"].is_string() || !j["events"].is_array() || !j["spurious"].is_array() ||
+      !j["events_compared"].is_number_unsigned())
+    throw Usage_error("kvd view: " + path + ": a kvd diff report with a field of the wrong type");
+  return j;
+}
+
+// The report's scene: its path from here, or else from the report's folder.
+std::string report_scene(const std::string& report, const nlohmann::json& j) {
+  const std::filesystem::path scene = j["scene"].get<std::string>();
+  if (scene.is_absolute() || std::filesystem::exists(scene)) return scene.string();
+  return (std::filesystem::path(report).parent_path() / scene).string();
+}
+
+// Usage_error unless the report's exact events are the run's, in order.
+void require_same_events(const std::string& report, const nlohmann::json& j, const view::Recorded_run& run) {
+  std::size_t i = 0;
+  const auto& events = j["events"];
+  for (std::size_t b = 0; b < run.failing.size(); ++b)
+    for (const auto& f : run.failing[b]) {
+      const std::string time = run.sim.batches[b].time.to_string();
+      if (i >= events.size() || events[i].value("exact_time", "") != time ||
+          events[i].value("certificate", "") != kinetic::to_string(f.type) || events[i].value("nodes", "") != f.features)
+        throw Usage_error("kvd view: " + report + ": /events/" + std::to_string(i) +
+                          " is not the exact run's event " + std::to_string(i) + " (" + kinetic::to_string(f.type) +
+                          " " + f.features + " at " + time + "): the report comes from another scene or seed");
+      ++i;
+    }
+  if (i != events.size())
+    throw Usage_error("kvd view: " + report + ": " + std::to_string(events.size()) + " exact events, the run has " +
+                      std::to_string(i));
+}
+
+}  // namespace
+
+int view(Args& args) {
+  Scene_args sa;
+  sa.wants_view = true;
+  kinetic::Options o;
+  std::optional<std::string> out;
+  while (!args.done()) {
+    const std::string& a = args.next();
+    if (a == "--help" || a == "-h") {
+      std::cout << view_help;
+      return 0;
+    }
+    if (a == "--events") o.max_events = args.unsigned_value(a);
+    else if (a == "--until") o.until = exact_option("view", a, args.value(a));
+    else if (a == "--out") out = args.value(a);
+    else if (a == "--collisions") o.collisions = collisions_option("view", args.value(a));
+    else if (a == "--json" || !sa.take(args, a)) args.unknown(a);
+  }
+  if (!view::page_supported())
+    throw Usage_error("kvd view: this build has no viewer page (Debian's libjs-three was not found when it was built)");
+  if (!out) throw Usage_error("kvd view: missing --out FILE.html (see kvd view --help)");
+  if (out->size() < 5 || out->compare(out->size() - 5, 5, ".html") != 0)
+    throw Usage_error("kvd view: --out must name an .html file");
+  if (!sa.path) throw Usage_error("kvd view: missing the SCENE or REPORT file (see kvd view --help)");
+  const std::string input = *sa.path;
+  const auto report = diff_report(input);
+  if (report) {
+    sa.path = report_scene(input, *report);
+    o.max_events = (*report)["events_compared"].get<std::size_t>();
+  }
+  const scene::Scene s = sa.load_scene("view");
+  if (o.until) require_in_span("view", "--until", *o.until, s);
+  o.progress = progress_every_few_seconds("kvd view");
+  const view::Recorded_run run = with_disjoint_triangles("view", *sa.path, [&] { return view::record_run(s, o); });
+  if (!run.sim.valid()) {
+    std::cerr << "kvd view: validation failed: " << run.sim.failure << "\n";
+    return 1;
+  }
+  if (report) require_same_events(input, *report, run);
+  view::Page_input page{std::filesystem::path(*sa.path).filename().string(), &run, report, std::nullopt};
+  if (sa.view) page.view = {{(*sa.view)[0].get_d(), (*sa.view)[1].get_d(), (*sa.view)[2].get_d()}};
+  const std::string html = view::page_html(view::page_data(page, progress_every_few_seconds("kvd view", "intervals drawn")));
+  write_atomically("view", *out, html);
+  std::cout << "kvd view: " << run.sim.batches.size() << " batches, " << run.sim.failures << " events, "
+            << run.sim.motion_changes.size() << " motion changes" << (report ? ", with the diff report" : "")
+            << "; wrote " << *out << " (" << html.size() / 1024 << " KiB)\n";
+  return 0;
+}
+
+}  // namespace kvd::cli

@@ -1,0 +1,83 @@
+#include "recorded_run.hpp"
+
+#include <map>
+
+#include "kvd/tree/build.hpp"
+
+namespace kvd::view {
+
+namespace {
+
+// Keeps the features of the certificates in force, to name those that fail.
+class Failing_recorder : public kinetic::Observer<Exact_kernel> {
+public:
+  explicit Failing_recorder(std::vector<std::vector<Failing_certificate>>& out) : out_(out) {}
+  void in_force(const Exact_time&, const std::vector<kinetic::Certificate<Exact_kernel::Poly>>& certs) override {
+    current_.clear();
+    for (const auto& c : certs) current_.try_emplace(c.nodes, Failing_certificate{c.type, c.nodes, c.vertices, c.planes});
+  }
+  void batch(const kinetic::Batch<Exact_time>& b, bool) override {
+    std::vector<Failing_certificate> failing;
+    for (const auto& f : b.failing) {
+      const auto it = current_.find(f.nodes);
+      failing.push_back(it != current_.end() ? it->second : Failing_certificate{f.type, f.nodes, {}, {}});
+    }
+    out_.push_back(std::move(failing));
+  }
+
+private:
+  std::vector<std::vector<Failing_certificate>>& out_;
+  std::map<std::string, Failing_certificate> current_;
+};
+
+}  // namespace
+
+Recorded_run record_run(const scene::Scene& s, const kinetic::Options& options) {
+  Recorded_run run{s, {}, {}};
+  Failing_recorder recorder(run.failing);
+  run.sim = kinetic::simulate(Exact_kernel(), s, options, &recorder);
+  run.failing.resize(run.sim.batches.size());  // a collision batch that stopped the run is not a batch
+  return run;
+}
+
+Instant::Instant(const Recorded_run& run, const mpq_class& t)
+    : t_(t), scene_(std::make_unique<scene::Scene>(kinetic::motions_at(run.scene, run.sim.motion_changes, t))),
+      classifier_(std::make_unique<predicates::Classifier<Exact_kernel>>(kernel_, *scene_)),
+      tree_(tree::build(*classifier_, Exact_time(t))) {}
+
+std::array<double, 3> Instant::position(const symbolic::Symbolic_vertex& v) const {
+  const auto p = classifier_->position(v);
+  const mpq_class w = p[3](t_);
+  if (w == 0) return {0, 0, 0};  // a direction: no place to draw
+  return {mpq_class(p[0](t_) / w).get_d(), mpq_class(p[1](t_) / w).get_d(), mpq_class(p[2](t_) / w).get_d()};
+}
+
+std::vector<Interval> intervals(const Recorded_run& run) {
+  std::vector<Interval> out;
+  Exact_time from(run.scene.start);
+  for (const auto& b : run.sim.batches) {
+    out.push_back({from, b.time});
+    from = b.time;
+  }
+  // A run stopped by its event count has events left before the limit.
+  if (run.sim.stopped != kinetic::Stop::events && run.sim.limit &&
+      Exact_kernel().compare(from, Exact_time(*run.sim.limit)) < 0) out.push_back({from, Exact_time(*run.sim.limit)});
+  else out.push_back({from, std::nullopt});
+  return out;
+}
+
+Instant inside(const Recorded_run& run, const Interval& i) {
+  if (i.to) return Instant(run, kinetic::rational_between(i.from, *i.to));
+  mpq_class step(1);
+  for (int tries = 0;; ++tries, step /= 2) {
+    while (!i.from.is_rational() && i.from.upper() - i.from.lower() > step) i.from.refine();
+    const mpq_class t = (i.from.is_rational() ? i.from.rational() : i.from.upper()) + step;
+    try {
+      return Instant(run, t);
+    } catch (const tree::Build_error&) {
+      if (tries == 60) throw;
+    }
+  }
+}
+
+}  // namespace kvd::view
