@@ -36,6 +36,56 @@ Rgb side_colour(const symbolic::Symbolic_edge& e) {
 
 }  // namespace
 
+Camera::Camera(const D3& e, const D3& target, int image_size) : eye(e), size(image_size) {
+  forward = unit(sub(target, eye));
+  right = cross(forward, D3{0, 0, 1});
+  if (dot3(right, right) < 1e-12) right = cross(forward, D3{0, 1, 0});
+  right = unit(right);
+  up = cross(right, forward);
+}
+
+std::optional<Camera::D2> Camera::project(const D3& p) const {
+  const D3 d = sub(p, eye);
+  const double depth = dot3(d, forward);
+  if (depth <= 0) return std::nullopt;
+  const D2 q{dot3(d, right) / depth, -dot3(d, up) / depth};
+  return framed ? to_image(q) : q;
+}
+
+Camera::D2 Camera::to_image(const D2& q) const {
+  return {(q[0] - cx) / span * size + size / 2.0, (q[1] - cy) / span * size + size / 2.0};
+}
+
+void Camera::frame(const D2& lo, const D2& hi) {
+  span = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-9}) * 1.05;
+  cx = (lo[0] + hi[0]) / 2, cy = (lo[1] + hi[1]) / 2;
+  framed = true;
+}
+
+std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c, const tree::Kvd_tree& tree,
+                                   const Point4<mpq_class>& view, const Camera& camera, const mpq_class& t,
+                                   const Render_options&) {
+  const scene::Scene& s = c.motion().scene();
+  std::vector<Painted_polygon> out;
+  for (int i : back_to_front(c, tree, view, t)) {
+    const tree::Node& n = tree.nodes[static_cast<std::size_t>(i)];
+    const auto& f = std::get<tree::Triangle_fragment>(n.fragment);
+    Painted_polygon poly{{}, {}, palette[s.triangle_object[n.cut.id] % (sizeof palette / sizeof *palette)]};
+    bool visible = true;
+    for (std::size_t k = 0; k < f.corners.size(); ++k) {
+      const auto p = c.position(f.corners[k]);
+      const mpq_class w = p[3](t);
+      const auto q = camera.project(
+          {mpq_class(p[0](t) / w).get_d(), mpq_class(p[1](t) / w).get_d(), mpq_class(p[2](t) / w).get_d()});
+      if (!q) visible = false;  // behind the eye: left out
+      else poly.points.push_back(*q);
+      poly.sides.push_back(side_colour(f.sides[k]));
+    }
+    if (visible) out.push_back(std::move(poly));
+  }
+  return out;
+}
+
 std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c, const tree::Kvd_tree& tree,
                                    const Point4<mpq_class>& view, const mpq_class& t, const Render_options& o) {
   const scene::Scene& s = c.motion().scene();
@@ -47,41 +97,18 @@ std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c
     for (int j = 0; j < 3; ++j)
       centre[static_cast<std::size_t>(j)] += mpq_class(p[j] / p[3]).get_d() / static_cast<double>(s.rest.size());
   }
-  const D3 forward = unit(sub(centre, eye));
-  D3 right = cross(forward, D3{0, 0, 1});
-  if (dot3(right, right) < 1e-12) right = cross(forward, D3{0, 1, 0});
-  right = unit(right);
-  const D3 up = cross(right, forward);
-
-  std::vector<Painted_polygon> out;
-  double lo_x = std::numeric_limits<double>::max(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
-  for (int i : back_to_front(c, tree, view, t)) {
-    const tree::Node& n = tree.nodes[static_cast<std::size_t>(i)];
-    const auto& f = std::get<tree::Triangle_fragment>(n.fragment);
-    Painted_polygon poly{{}, {}, palette[s.triangle_object[n.cut.id] % (sizeof palette / sizeof *palette)]};
-    bool visible = true;
-    for (std::size_t k = 0; k < f.corners.size(); ++k) {
-      const auto p = c.position(f.corners[k]);
-      const mpq_class w = p[3](t);
-      const D3 x{mpq_class(p[0](t) / w).get_d(), mpq_class(p[1](t) / w).get_d(), mpq_class(p[2](t) / w).get_d()};
-      const D3 d = sub(x, eye);
-      const double depth = dot3(d, forward);
-      if (depth <= 0) visible = false;  // behind the eye: left out
-      poly.points.push_back({dot3(d, right) / depth, -dot3(d, up) / depth});
-      poly.sides.push_back(side_colour(f.sides[k]));
-    }
-    if (!visible) continue;
+  Camera camera(eye, centre, o.size);
+  std::vector<Painted_polygon> out = paint(c, tree, view, camera, t, o);
+  // Framed to the projected bounds of what is drawn.
+  Camera::D2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi{-lo[0], -lo[1]};
+  for (const auto& poly : out)
     for (const auto& q : poly.points) {
-      lo_x = std::min(lo_x, q[0]), hi_x = std::max(hi_x, q[0]);
-      lo_y = std::min(lo_y, q[1]), hi_y = std::max(hi_y, q[1]);
+      lo[0] = std::min(lo[0], q[0]), hi[0] = std::max(hi[0], q[0]);
+      lo[1] = std::min(lo[1], q[1]), hi[1] = std::max(hi[1], q[1]);
     }
-    out.push_back(std::move(poly));
-  }
-  // Image coordinates: the projected bounds, centred, with a 5% margin.
-  const double span = std::max({hi_x - lo_x, hi_y - lo_y, 1e-9}) * 1.05;
-  const double cx = (lo_x + hi_x) / 2, cy = (lo_y + hi_y) / 2;
+  camera.frame(lo, hi);
   for (auto& poly : out)
-    for (auto& q : poly.points) q = {(q[0] - cx) / span * o.size + o.size / 2.0, (q[1] - cy) / span * o.size + o.size / 2.0};
+    for (auto& q : poly.points) q = camera.to_image(q);
   return out;
 }
 

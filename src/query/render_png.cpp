@@ -23,7 +23,7 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
 
 }  // namespace
 
-std::string to_png(const std::vector<Painted_polygon>& picture, const Render_options& o) {
+std::string to_png(const std::vector<Painted_polygon>& picture, const Render_options& o, const Overlay& overlay) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.size, o.size);
   cairo_t* cr = cairo_create(surface);
   set(cr, {255, 255, 255});
@@ -49,6 +49,26 @@ std::string to_png(const std::vector<Painted_polygon>& picture, const Render_opt
       cairo_stroke(cr);
     }
   }
+  set(cr, {0xd6, 0x27, 0x28});
+  cairo_set_line_width(cr, 2.5);
+  for (const auto& line : overlay.outlines) {
+    cairo_new_path(cr);
+    for (const auto& q : line) cairo_line_to(cr, q[0], q[1]);
+    if (line.size() >= 3) cairo_close_path(cr);
+    cairo_stroke(cr);
+  }
+  for (const auto& p : overlay.points) {
+    cairo_new_path(cr);
+    cairo_arc(cr, p[0], p[1], 4, 0, 6.283185307179586);
+    cairo_fill(cr);
+  }
+  set(cr, {0, 0, 0});
+  cairo_select_font_face(cr, "monospace", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 14);
+  for (std::size_t k = 0; k < overlay.caption.size(); ++k) {
+    cairo_move_to(cr, 8, 18 + 18 * static_cast<double>(k));
+    cairo_show_text(cr, overlay.caption[k].c_str());
+  }
   std::string bytes;
   const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append, &bytes);
   cairo_destroy(cr);
@@ -59,7 +79,7 @@ std::string to_png(const std::vector<Painted_polygon>& picture, const Render_opt
 #else
 bool png_supported() { return false; }
 
-std::string to_png(const std::vector<Painted_polygon>&, const Render_options&) {
+std::string to_png(const std::vector<Painted_polygon>&, const Render_options&, const Overlay&) {
   throw std::logic_error("this build of kvd has no PNG output (cairo was not found)");
 }
 #endif

@@ -18,11 +18,8 @@ std::string pair(double x, double y) {
 }
 }  // namespace
 
-std::string to_svg(const std::vector<Painted_polygon>& picture, const Render_options& o) {
+std::string svg_elements(const std::vector<Painted_polygon>& picture, const Render_options& o, const Overlay& overlay) {
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << o.size << "\" height=\"" << o.size
-      << "\" viewBox=\"0 0 " << o.size << " " << o.size << "\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& poly : picture) {
     svg << "<polygon points=\"";
     for (std::size_t k = 0; k < poly.points.size(); ++k) svg << (k ? " " : "") << pair(poly.points[k][0], poly.points[k][1]);
@@ -36,7 +33,30 @@ std::string to_svg(const std::vector<Painted_polygon>& picture, const Render_opt
       svg << buf << " stroke=\"" << hex(poly.sides[k]) << "\" stroke-width=\"1.2\"/>\n";
     }
   }
-  svg << "</svg>\n";
+  for (const auto& line : overlay.outlines) {
+    svg << (line.size() >= 3 ? "<polygon" : "<polyline") << " points=\"";
+    for (std::size_t k = 0; k < line.size(); ++k) svg << (k ? " " : "") << pair(line[k][0], line[k][1]);
+    svg << "\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"2.5\"/>\n";
+  }
+  for (const auto& p : overlay.points) {
+    char buf[120];
+    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"4\" fill=\"#d62728\"/>\n", p[0], p[1]);
+    svg << buf;
+  }
+  for (std::size_t k = 0; k < overlay.caption.size(); ++k) {
+    std::string text;
+    for (char ch : overlay.caption[k]) text += ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : ch == '&' ? "&amp;" : std::string(1, ch);
+    svg << "<text x=\"8\" y=\"" << 18 + 18 * k << "\" font-family=\"monospace\" font-size=\"14\">" << text << "</text>\n";
+  }
+  return svg.str();
+}
+
+std::string to_svg(const std::vector<Painted_polygon>& picture, const Render_options& o, const Overlay& overlay) {
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << o.size << "\" height=\"" << o.size
+      << "\" viewBox=\"0 0 " << o.size << " " << o.size << "\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << svg_elements(picture, o, overlay) << "</svg>\n";
   return svg.str();
 }
 

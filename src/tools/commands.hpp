@@ -12,6 +12,7 @@
   X(build, "SCENE", "build the KVD at an instant and print its statistics")                \
   X(order, "SCENE", "list triangle fragments back to front from a viewpoint")              \
   X(render, "SCENE", "paint the decomposition from a viewpoint (SVG or PNG)")              \
+  X(animate, "SCENE", "film a run from a viewpoint (SVG, MP4 or GIF), events held")        \
   X(simulate, "SCENE", "run the kinetic KVD (exact events, symbolic batches)")             \
   X(certify, "SCENE", "write an event-order certificate of the exact simulation")          \
   X(diff, "SCENE", "compare a floating-point simulation with the exact one")               \

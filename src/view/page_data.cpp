@@ -43,26 +43,14 @@ struct Grid {
   }
 };
 
-// Where a failing certificate's features are at the instant: its symbolic
-// vertices as points, and each plane's site (P: the vertex, E: the edge, T:
-// the triangle).
+// A failing certificate with its features' shapes on the grid.
 json features(const Failing_certificate& f, const Instant& in, const Grid& g) {
-  const scene::Scene& s = in.scene();
+  const Feature_shapes shapes = feature_shapes(f, in);
   json points = json::array(), segments = json::array(), triangles = json::array(), names = json::array();
-  for (const auto& v : f.vertices) points.push_back(g.flat({in.position(v)}));
-  for (const auto& p : f.planes) {
-    names.push_back(symbolic::to_string(p));
-    const auto at = [&](std::size_t v) { return in.position(symbolic::Symbolic_vertex::endpoint(v)); };
-    switch (p.kind) {
-      case symbolic::Symbolic_plane::Kind::P: points.push_back(g.flat({at(p.id)})); break;
-      case symbolic::Symbolic_plane::Kind::E: segments.push_back(g.flat({at(s.edges[p.id][0]), at(s.edges[p.id][1])})); break;
-      case symbolic::Symbolic_plane::Kind::T: {
-        const auto& t = s.triangles[p.id];
-        triangles.push_back(g.flat({at(t[0]), at(t[1]), at(t[2])}));
-        break;
-      }
-    }
-  }
+  for (const auto& p : f.planes) names.push_back(symbolic::to_string(p));
+  for (const auto& p : shapes.points) points.push_back(g.flat({p}));
+  for (const auto& e : shapes.segments) segments.push_back(g.flat({e[0], e[1]}));
+  for (const auto& t : shapes.triangles) triangles.push_back(g.flat({t[0], t[1], t[2]}));
   return {{"type", kinetic::to_string(f.type)}, {"features", f.features}, {"planes", names},
           {"points", points},  {"segments", segments},                  {"triangles", triangles}};
 }

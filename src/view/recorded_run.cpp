@@ -52,6 +52,25 @@ std::array<double, 3> Instant::position(const symbolic::Symbolic_vertex& v) cons
   return {mpq_class(p[0](t_) / w).get_d(), mpq_class(p[1](t_) / w).get_d(), mpq_class(p[2](t_) / w).get_d()};
 }
 
+Feature_shapes feature_shapes(const Failing_certificate& f, const Instant& in) {
+  const scene::Scene& s = in.scene();
+  const auto at = [&](std::size_t v) { return in.position(symbolic::Symbolic_vertex::endpoint(v)); };
+  Feature_shapes out;
+  for (const auto& v : f.vertices) out.points.push_back(in.position(v));
+  for (const auto& p : f.planes) {
+    switch (p.kind) {
+      case symbolic::Symbolic_plane::Kind::P: out.points.push_back(at(p.id)); break;
+      case symbolic::Symbolic_plane::Kind::E: out.segments.push_back({at(s.edges[p.id][0]), at(s.edges[p.id][1])}); break;
+      case symbolic::Symbolic_plane::Kind::T: {
+        const auto& t = s.triangles[p.id];
+        out.triangles.push_back({at(t[0]), at(t[1]), at(t[2])});
+        break;
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<Interval> intervals(const Recorded_run& run) {
   std::vector<Interval> out;
   Exact_time from(run.scene.start);

@@ -56,6 +56,16 @@ private:
   tree::Kvd_tree tree_;
 };
 
+// Where a failing certificate's features are at an instant: its symbolic
+// vertices and each P-site's vertex as points, each E-site's edge as a
+// segment, each T-site's triangle.
+struct Feature_shapes {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::array<double, 3>, 2>> segments;
+  std::vector<std::array<std::array<double, 3>, 3>> triangles;
+};
+Feature_shapes feature_shapes(const Failing_certificate& f, const Instant& in);
+
 // The intervals of the run between consecutive instants, in order: from the
 // start to the first batch, then from each batch to the next one, or after
 // the last to the time limit when the run reached it, or else none.

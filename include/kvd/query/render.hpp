@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,16 +31,55 @@ struct Painted_polygon {
   Rgb fill;
 };
 
-// The fragments seen from `view` (looking at the centroid of the vertices, z
-// up), back to front; fragments with a vertex behind the eye are left out.
-// Coordinates are exact until projection, which is done in double: a
-// picture needs no more.
+// A perspective camera at `eye` looking at `target`, z up. Unframed, it
+// maps a point to the image plane (right, down over depth); framed, to
+// image coordinates ([0, size]^2 holding the framed bounds with a 5% margin).
+struct Camera {
+  using D3 = std::array<double, 3>;
+  using D2 = std::array<double, 2>;
+  D3 eye{}, forward{}, right{}, up{};
+  int size = 800;
+  bool framed = false;
+  double cx = 0, cy = 0, span = 1;
+  Camera() = default;
+  Camera(const D3& eye, const D3& target, int size);
+  // The point's place, none when it is not in front of the eye.
+  std::optional<D2> project(const D3& p) const;
+  // Frames the image-plane bounds [lo, hi] (points projected unframed).
+  void frame(const D2& lo, const D2& hi);
+  // An unframed projection in image coordinates of the framed camera.
+  D2 to_image(const D2& q) const;
+};
+
+// The fragments of `tree` at t seen by the camera, back to front from
+// `view` (the camera's eye, exactly); fragments
+// with a vertex behind the eye are left out. Coordinates are exact until
+// projection, which is done in double: a picture needs no more.
+std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& classifier, const tree::Kvd_tree& tree,
+                                   const Point4<mpq_class>& view, const Camera& camera, const mpq_class& t,
+                                   const Render_options& options);
+
+// The fragments seen from `view`, looking at the centroid of the vertices,
+// framed to hold them all.
 std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& classifier, const tree::Kvd_tree& tree,
                                    const Point4<mpq_class>& view, const mpq_class& t, const Render_options& options);
 
-std::string to_svg(const std::vector<Painted_polygon>& picture, const Render_options& options);
+// Marks over a picture, in image coordinates: red dots, red polylines
+// (closed from three points on) and lines of text at the top left.
+struct Overlay {
+  std::vector<std::array<double, 2>> points;
+  std::vector<std::vector<std::array<double, 2>>> outlines;
+  std::vector<std::string> caption;
+};
+
+std::string to_svg(const std::vector<Painted_polygon>& picture, const Render_options& options,
+                   const Overlay& overlay = {});
+// The picture's SVG elements alone, for a document of several pictures.
+std::string svg_elements(const std::vector<Painted_polygon>& picture, const Render_options& options,
+                         const Overlay& overlay = {});
 // The PNG file's bytes (drawn with cairo).
-std::string to_png(const std::vector<Painted_polygon>& picture, const Render_options& options);
+std::string to_png(const std::vector<Painted_polygon>& picture, const Render_options& options,
+                   const Overlay& overlay = {});
 // Whether this build writes PNG (cairo is optional; SVG is always there).
 bool png_supported();
 

@@ -1,0 +1,47 @@
+// Animations of a run (kvd animate): frames painted back to front with the
+// tree in force, sampled evenly in time, plus a held frame just after every
+// batch with the failing certificates' features marked in red and named.
+// Every batch of the run appears. Written as one SVG (the frames shown in
+// turn by SMIL) or, through ffmpeg, as MP4 or GIF from cairo's PNG frames.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kvd/query/render.hpp"
+#include "recorded_run.hpp"
+
+namespace kvd::view {
+
+struct Animation_options {
+  std::array<mpq_class, 3> view;  // the camera's eye, looking at the scene's centre at the start
+  int fps = 10;
+  int sampled = 80;  // frames sampled evenly over the run's span
+  int hold = 5;      // frames each batch's picture is held for
+  query::Render_options render;
+};
+
+struct Animation_frame {
+  mpq_class time;                     // the instant drawn
+  std::optional<std::size_t> batch;   // the batch it comes just after, for a held frame
+  std::vector<query::Painted_polygon> picture;
+  query::Overlay overlay;
+  int repeat = 1;  // frames it lasts
+};
+
+// The frames in time order, framed together so that the camera stays still.
+// Calls progress(done, of) after each frame.
+std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& options,
+                                              const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+// One SVG document showing the frames in turn, looping (SMIL).
+std::string animated_svg(const std::vector<Animation_frame>& frames, const Animation_options& options);
+
+// MP4 or GIF (by the extension of `path`) through ffmpeg, as bytes; throws
+// std::runtime_error when ffmpeg is missing or fails.
+std::string encoded_video(const std::vector<Animation_frame>& frames, const Animation_options& options,
+                          const std::string& path);
+
+}  // namespace kvd::view
