@@ -416,3 +416,33 @@ TEST_CASE("kvd import: a mesh becomes a scene that info and build agree on", "[c
   CHECK(run("import " + meshes + "missing.obj").status == 2);
   CHECK_FALSE(std::filesystem::exists(never));
 }
+
+TEST_CASE("kvd view and kvd animate refuse bad input with status 2 and write nothing", "[cli][view][animate]") {
+  const std::string data = std::string(KVD_SOURCE_DIR) + "/data/";
+  const std::string dir = std::string(KVD_BINARY_DIR) + "/";
+  const std::string page = dir + "refused.html", film = dir + "refused.svg", trace = dir + "view-boxes.trace";
+  std::remove(page.c_str());
+  std::remove(film.c_str());
+  CHECK(run("view " + data + "boxes.json").status == 2);                                  // no --out
+  CHECK(run("view " + data + "boxes.json --out " + dir + "refused.svg").status == 2);     // not .html
+  CHECK(run("view " + data + "no-such.json --out " + page).status == 2);
+  CHECK(run("view " + data + "boxes.json --events x --out " + page).status == 2);
+  REQUIRE(run("simulate " + data + "boxes.json --events 5 --trace " + trace).status == 0);
+  CHECK(run("view " + trace + " --out " + page).status == 2);                             // a trace needs --scene
+  CHECK(run("view " + trace + " --scene " + data + "two-triangles.json --out " + page).status == 2);  // not its run
+  {  // a trace whose first event was altered
+    std::ifstream in(trace);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("\"certificate\": \"");
+    REQUIRE(at != std::string::npos);
+    text.insert(at + 16, "X");
+    std::ofstream(dir + "view-altered.trace") << text;
+  }
+  CHECK(run("view " + dir + "view-altered.trace --scene " + data + "boxes.json --out " + page).status == 2);
+  CHECK(!std::ifstream(page).good());
+  CHECK(run("animate " + data + "boxes.json --out " + film).status == 2);                  // no --view
+  CHECK(run("animate " + data + "boxes.json --view 1,2,3").status == 2);                  // no --out
+  CHECK(run("animate " + data + "boxes.json --view 1,2,3 --out " + dir + "x.avi").status == 2);
+  CHECK(run("animate " + data + "boxes.json --view 1,2,3 --fps 0 --out " + film).status == 2);
+  CHECK(!std::ifstream(film).good());
+}

@@ -13,6 +13,7 @@ namespace {
 const char* const view_help =
     "usage: kvd view SCENE|REPORT --out FILE.html [--events N] [--until T]\n"
     "                [--view X,Y,Z] [--seed S] [--collisions reverse|stop]\n"
+    "       kvd view TRACE --scene SCENE --out FILE.html [--seed S] [...]\n"
     "\n"
     "Runs the exact kinetic KVD (as kvd simulate, validating every batch) and\n"
     "writes one self-contained HTML page, which works offline:\n"
@@ -29,6 +30,9 @@ const char* const view_help =
     "and the floating-point events side by side, with the first divergence\n"
     "marked. The run is the report's scene (its path as written there, from the\n"
     "current folder or else from the report's) over the report's exact events.\n"
+    "TRACE is the output of kvd simulate --trace (exact kernel) of SCENE: the page\n"
+    "shows its batches. The run must list the same events as the report or the\n"
+    "trace, in the same order at the same exact times (exit 2 if not).\n"
     "\n"
     "  --events N      stop after the batch holding the N-th failure (default 100)\n"
     "  --until T       stop after the last batch at a time <= T (exact)\n"
@@ -38,9 +42,13 @@ const char* const view_help =
     "FILE is written completely or not at all. Exit status: 0 on success, 1 on a\n"
     "failed validation (nothing written), 2 on bad input.\n";
 
-// A kvd diff --json report, or nothing when `path` holds something else.
-std::optional<nlohmann::json> diff_report(const std::string& path) {
-  const std::string text = scene::read_input(path);
+// An event as a report or a trace lists it, with its place there.
+struct Listed_event {
+  std::string place, time, certificate, nodes;
+};
+
+// A kvd diff --json report, or nothing when `text` holds something else.
+std::optional<nlohmann::json> diff_report(const std::string& path, const std::string& text) {
   const auto j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("first_divergence_event")) return std::nullopt;
   for (const char* key : {"scene", "kernel", "events", "spurious", "events_compared"})
@@ -51,6 +59,39 @@ std::optional<nlohmann::json> diff_report(const std::string& path) {
   return j;
 }
 
+std::vector<Listed_event> report_events(const nlohmann::json& j) {
+  std::vector<Listed_event> out;
+  for (std::size_t i = 0; i < j["events"].size(); ++i) {
+    const auto& e = j["events"][i];
+    out.push_back({"/events/" + std::to_string(i), e.value("exact_time", ""), e.value("certificate", ""), e.value("nodes", "")});
+  }
+  return out;
+}
+
+// The failures of a kvd simulate --trace file (JSON lines), or nothing when
+// `text` is not one.
+std::optional<std::vector<Listed_event>> trace_events(const std::string& path, const std::string& text) {
+  std::vector<Listed_event> out;
+  std::size_t line_number = 0, start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, end - start);
+    start = end + 1;
+    ++line_number;
+    if (line.empty()) continue;
+    const auto j = nlohmann::json::parse(line, nullptr, false);
+    const bool traced = j.is_object() && (j.contains("batch") || j.contains("motion_change"));
+    if (!traced) {
+      if (line_number == 1) return std::nullopt;
+      throw Usage_error("kvd view: " + path + ": line " + std::to_string(line_number) + " is not a trace line");
+    }
+    if (j.contains("batch"))
+      out.push_back({"line " + std::to_string(line_number), j.value("time", ""), j.value("certificate", ""),
+                     j.value("nodes", "")});
+  }
+  return out;
+}
+
 // The report's scene: its path from here, or else from the report's folder.
 std::string report_scene(const std::string& report, const nlohmann::json& j) {
   const std::filesystem::path scene = j["scene"].get<std::string>();
@@ -58,22 +99,21 @@ std::string report_scene(const std::string& report, const nlohmann::json& j) {
   return (std::filesystem::path(report).parent_path() / scene).string();
 }
 
-// Usage_error unless the report's exact events are the run's, in order.
-void require_same_events(const std::string& report, const nlohmann::json& j, const view::Recorded_run& run) {
+// Usage_error unless the listed events are the exact run's, in order.
+void require_same_events(const std::string& path, const std::vector<Listed_event>& listed, const view::Recorded_run& run) {
   std::size_t i = 0;
-  const auto& events = j["events"];
   for (std::size_t b = 0; b < run.failing.size(); ++b)
     for (const auto& f : run.failing[b]) {
       const std::string time = run.sim.batches[b].time.to_string();
-      if (i >= events.size() || events[i].value("exact_time", "") != time ||
-          events[i].value("certificate", "") != kinetic::to_string(f.type) || events[i].value("nodes", "") != f.features)
-        throw Usage_error("kvd view: " + report + ": /events/" + std::to_string(i) +
-                          " is not the exact run's event " + std::to_string(i) + " (" + kinetic::to_string(f.type) +
-                          " " + f.features + " at " + time + "): the report comes from another scene or seed");
+      const std::string type = kinetic::to_string(f.type);
+      if (i >= listed.size() || listed[i].time != time || listed[i].certificate != type || listed[i].nodes != f.features)
+        throw Usage_error("kvd view: " + path + ": " + (i < listed.size() ? listed[i].place : "the end") +
+                          ": not the exact run's event " + std::to_string(i) + " (" + type + " " + f.features +
+                          " at " + time + "): it comes from another scene, seed, options or kernel");
       ++i;
     }
-  if (i != events.size())
-    throw Usage_error("kvd view: " + report + ": " + std::to_string(events.size()) + " exact events, the run has " +
+  if (i != listed.size())
+    throw Usage_error("kvd view: " + path + ": " + std::to_string(listed.size()) + " events, the exact run has " +
                       std::to_string(i));
 }
 
@@ -83,7 +123,7 @@ int view(Args& args) {
   Scene_args sa;
   sa.wants_view = true;
   kinetic::Options o;
-  std::optional<std::string> out;
+  std::optional<std::string> out, scene_of_trace;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -93,6 +133,7 @@ int view(Args& args) {
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--until") o.until = exact_option("view", a, args.value(a));
     else if (a == "--out") out = args.value(a);
+    else if (a == "--scene") scene_of_trace = args.value(a);
     else if (a == "--collisions") o.collisions = collisions_option("view", args.value(a));
     else if (a == "--json" || !sa.take(args, a)) args.unknown(a);
   }
@@ -103,11 +144,19 @@ int view(Args& args) {
     throw Usage_error("kvd view: --out must name an .html file");
   if (!sa.path) throw Usage_error("kvd view: missing the SCENE or REPORT file (see kvd view --help)");
   const std::string input = *sa.path;
-  const auto report = diff_report(input);
+  const std::string text = scene::read_input(input);
+  const auto report = diff_report(input, text);
+  const auto trace = report ? std::nullopt : trace_events(input, text);
+  std::optional<std::vector<Listed_event>> listed;
   if (report) {
     sa.path = report_scene(input, *report);
-    o.max_events = (*report)["events_compared"].get<std::size_t>();
+    listed = report_events(*report);
+  } else if (trace) {
+    if (!scene_of_trace) throw Usage_error("kvd view: " + input + " is a trace: give its scene with --scene SCENE");
+    sa.path = *scene_of_trace;
+    listed = trace;
   }
+  if (listed) o.max_events = listed->size();
   const scene::Scene s = sa.load_scene("view");
   if (o.until) require_in_span("view", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd view");
@@ -116,13 +165,13 @@ int view(Args& args) {
     std::cerr << "kvd view: validation failed: " << run.sim.failure << "\n";
     return 1;
   }
-  if (report) require_same_events(input, *report, run);
+  if (listed) require_same_events(input, *listed, run);
   view::Page_input page{std::filesystem::path(*sa.path).filename().string(), &run, report, std::nullopt};
   if (sa.view) page.view = {{(*sa.view)[0].get_d(), (*sa.view)[1].get_d(), (*sa.view)[2].get_d()}};
   const std::string html = view::page_html(view::page_data(page, progress_every_few_seconds("kvd view", "intervals drawn")));
   write_atomically("view", *out, html);
   std::cout << "kvd view: " << run.sim.batches.size() << " batches, " << run.sim.failures << " events, "
-            << run.sim.motion_changes.size() << " motion changes" << (report ? ", with the diff report" : "")
+            << run.sim.motion_changes.size() << " motion changes" << (report ? ", with the diff report" : trace ? ", as traced" : "")
             << "; wrote " << *out << " (" << html.size() / 1024 << " KiB)\n";
   return 0;
 }

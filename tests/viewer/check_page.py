@@ -3,7 +3,8 @@
 chromium-driver, through Selenium) and checks them against kvd's own trace:
 
   * the page logs no console error and draws the scene (WebGL pixels);
-  * the timeline lists exactly the trace's batches, in order, by exact time;
+  * the timeline lists exactly the trace's batches, in order, by exact time,
+    and the page made from the trace (kvd view TRACE --scene) lists the same;
   * clicking the k-th batch (first, middle, last) shows its exact time and
     every failing certificate's type and features;
   * a diff page lists every exact event of the report and marks the first
@@ -61,6 +62,13 @@ def trace_batches(kvd, scene, events, workdir):
     return batches
 
 
+def page_data(page):
+    """The kvd-view/1 data a page embeds."""
+    text = open(page, encoding="utf-8").read()
+    start = text.index('id="kvd-data">') + len('id="kvd-data">')
+    return json.loads(text[start:text.index("</script>", start)])
+
+
 def console_errors(d):
     return [e["message"] for e in d.get_log("browser") if e["level"] == "SEVERE"]
 
@@ -112,6 +120,13 @@ def check_scene_page(d, kvd, scene, events, outdir):
     if errors:
         fail(name + ": console errors after clicking: " + "; ".join(errors))
     d.save_screenshot(os.path.join(outdir, "viewer-" + name + ".png"))
+    # The same page from the run's trace.
+    traced = os.path.join(outdir, name + "-traced.html")
+    subprocess.run([kvd, "view", os.path.join(outdir, os.path.basename(scene) + ".trace"), "--scene", scene,
+                    "--out", traced], check=True, stdout=subprocess.DEVNULL)
+    listed = lambda p: [(b["time"], [(c["type"], c["features"]) for c in b["failing"]]) for b in page_data(p)["batches"]]
+    if listed(traced) != listed(page):
+        fail(name + ": the page made from the trace lists other batches than the page made from the scene")
     print(f"{name}: {len(expected)} batches listed as in the trace, 3 clicks checked, "
           f"{os.path.getsize(page) // 1024} KiB")
 
