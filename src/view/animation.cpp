@@ -30,13 +30,13 @@ struct Planned {
 };
 
 // Sampled instants over [start, end] and one just after each batch, in time
-// order. `end` is the limit when the run reached it, else its last batch.
+// order. `end` is the limit when the run went on to it, else its last batch.
 std::vector<Planned> plan(const Recorded_run& run, int sampled) {
   const auto& batches = run.sim.batches;
   const mpq_class start = run.scene.start;
   const auto spans = intervals(run);
   mpq_class end = start + 1;
-  if (spans.back().to) end = spans.back().to->rational();  // the limit, which is rational
+  if (run.sim.stopped != kinetic::Stop::events && run.sim.limit) end = *run.sim.limit;
   else if (!batches.empty()) end = batches.back().time.is_rational() ? batches.back().time.rational() : batches.back().time.lower();
   std::vector<Planned> out;
   for (int i = 0; i < sampled && end > start; ++i) out.push_back({start + (end - start) * (2 * i + 1) / (2 * sampled), {}});

@@ -32,6 +32,9 @@ struct Recorded_run {
   scene::Scene scene;
   kinetic::Simulation<Exact_time> sim;
   std::vector<std::vector<Failing_certificate>> failing;  // per batch, in the batch's order
+  // When the run stopped at its event count: the first failure after its
+  // last batch, which ends the interval of the tree in force at the end.
+  std::optional<Exact_time> next_failure;
 };
 
 // Runs the exact simulation with `options` (validation as they say).
@@ -68,7 +71,7 @@ Feature_shapes feature_shapes(const Failing_certificate& f, const Instant& in);
 
 // The intervals of the run between consecutive instants, in order: from the
 // start to the first batch, then from each batch to the next one, or after
-// the last to the time limit when the run reached it, or else none.
+// the last to the next failure or the time limit, or else none.
 struct Interval {
   Exact_time from;
   std::optional<Exact_time> to;

@@ -3,6 +3,7 @@
 chromium-driver, through Selenium) and checks them against kvd's own trace:
 
   * the page logs no console error and draws the scene (WebGL pixels);
+  * a batch changes the tree in the page's data exactly when the run says so;
   * the timeline lists exactly the trace's batches, in order, by exact time,
     and the page made from the trace (kvd view TRACE --scene) lists the same;
   * clicking the k-th batch (first, middle, last) shows its exact time and
@@ -98,6 +99,11 @@ def check_scene_page(d, kvd, scene, events, outdir):
     if drawn_pixels(d) < 100:
         fail(name + ": the 3D view drew nothing")
     expected = trace_batches(kvd, scene, events, outdir)
+    data = page_data(page)
+    for k, b in enumerate(data["batches"]):
+        if b["tree_changed"] != bool(data["frames"][b["frame"]]["changed"]):
+            fail(f"{name}: batch {k}: the run says the tree {'did' if b['tree_changed'] else 'did not'} change, "
+                 f"the page's trees say otherwise")
     items = d.find_elements(By.CSS_SELECTOR, "#timeline li.batch")
     times = [li.get_attribute("data-time") for li in items]
     if times != [t for t, _ in expected]:
@@ -119,6 +125,8 @@ def check_scene_page(d, kvd, scene, events, outdir):
     errors = console_errors(d)
     if errors:
         fail(name + ": console errors after clicking: " + "; ".join(errors))
+    for k in ("P", "E"):  # the screenshot shows the cells' walls
+        d.find_element(By.ID, "show-" + k).click()
     d.save_screenshot(os.path.join(outdir, "viewer-" + name + ".png"))
     # The same page from the run's trace.
     traced = os.path.join(outdir, name + "-traced.html")
