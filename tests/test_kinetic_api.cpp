@@ -89,3 +89,54 @@ TEST_CASE("advance_to stops at a time, and the queries between events agree with
     REQUIRE(stepped.advance() != nullptr);
   }
 }
+
+TEST_CASE("set_motion gives the tree and later events of the scene whose motion is split there", "[api]") {
+  const kvd::Exact_kernel k;
+  const auto s = bundled("uniform-scale-25.json");
+  kvd::kinetic::Options o;
+  o.max_events = 40;  // validated every batch (the default)
+  const auto whole = kvd::kinetic::simulate(k, s, o);
+  REQUIRE(whole.batches.size() > 12);
+  const mpq_class t0 = kvd::kinetic::rational_between(whole.batches[5].time, whole.batches[6].time);
+  // Object 3 turns back at t0 at twice its speed: the same place at t0.
+  const std::size_t object = 3;
+  kvd::scene::Motion turned = s.objects[object].motion;
+  REQUIRE(turned.kind == kvd::scene::Motion::Kind::translation);
+  for (auto& p : turned.translation) {
+    const mpq_class v = p.derivative()(t0);
+    p = kvd::Poly<mpq_class>(std::vector<mpq_class>{mpq_class(p(t0) + 2 * v * t0), mpq_class(-2 * v)});
+  }
+  kvd::Kinetic_kvd<kvd::Exact_kernel> changed(k, s, o);
+  REQUIRE(changed.advance_to(t0) == 6);
+  CHECK_THROWS_AS(changed.set_motion(99, turned, t0), std::invalid_argument);
+  CHECK_THROWS_AS(changed.set_motion(object, turned, t0 + 1000), std::invalid_argument);  // past the next event
+  changed.set_motion(object, turned, t0);
+  // The piecewise scene, split at t0: it starts there with the new motion.
+  kvd::scene::Scene split = s;
+  split.start = t0;
+  split.objects[object].motion = turned;
+  kvd::kinetic::Options rest = o;
+  rest.max_events = o.max_events - changed.record().failures;
+  const auto after = kvd::kinetic::simulate(k, split, rest);
+  REQUIRE(after.valid());
+  const kvd::predicates::Classifier<kvd::Exact_kernel> c(k, split);
+  CHECK(changed.structure_hash() == kvd::tree::structure_hash(kvd::tree::build(c, kvd::Exact_time(t0))));
+  std::size_t i = 0;
+  while (const auto* b = changed.advance()) {
+    REQUIRE(i < after.batches.size());
+    same_batch(k, *b, after.batches[i]);
+    ++i;
+  }
+  CHECK(i == after.batches.size());
+  CHECK(i > 0);
+  CHECK(changed.record().valid());
+  CHECK(changed.record().structure_hash == after.structure_hash);
+  REQUIRE(changed.record().motion_changes.size() == 1);
+  CHECK(changed.record().motion_changes[0].contact == "flight-plan change");
+  // Different motions, different events: the split run is not the unchanged one.
+  bool differs = after.batches.size() != whole.batches.size() - 6;
+  for (std::size_t j = 0; !differs && j < after.batches.size(); ++j)
+    differs = after.batches[j].failing != whole.batches[6 + j].failing ||
+              k.compare(after.batches[j].time, whole.batches[6 + j].time) != 0;
+  CHECK(differs);
+}

@@ -64,6 +64,15 @@ public:
   std::size_t advance_to(const typename K::FT& t);
   bool stopped() const;
 
+  // A flight-plan change (seed 003, section 3): `object` moves by `motion`
+  // from the rational instant `at` on, now() <= at < next_event_time().
+  // Every certificate is made again from the new motions, and the change is
+  // recorded among record().motion_changes (which --events N also bounds).
+  // Throws std::invalid_argument on a bad object, motion or instant, and
+  // tree::Build_error, leaving the run as it was, when triangles would meet
+  // just after `at`.
+  void set_motion(std::size_t object, const scene::Motion& motion, const mpq_class& at);
+
   // The tree in force, read-only (valid on (now, next_event_time)).
   const tree::Kvd_tree& tree() const;
   // Its structure hash (README: the canonical serialisation's SHA-256).

@@ -58,6 +58,11 @@ bool Kinetic_kvd<K>::stopped() const {
 }
 
 template <class K>
+void Kinetic_kvd<K>::set_motion(std::size_t object, const scene::Motion& motion, const mpq_class& at) {
+  sim_->set_motion(object, motion, at);
+}
+
+template <class K>
 const tree::Kvd_tree& Kinetic_kvd<K>::tree() const {
   return sim_->tree();
 }

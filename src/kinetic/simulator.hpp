@@ -96,6 +96,43 @@ public:
     sim_.structure_hash = tree::structure_hash(current_);
     return sim_;
   }
+  // A flight-plan change: `object` moves by `motion` from the rational
+  // instant `at` on, now <= at < the next event (and within the limit). The
+  // tree in force is valid at `at`; it is rebuilt just after `at` under the
+  // new motions (it changes only where the object jumps or a classification
+  // the perturbation decided no longer vanishes), and every certificate is
+  // made again from the new motions. Recorded as a motion change; throws
+  // std::invalid_argument on a bad object, motion or instant, and
+  // tree::Build_error (leaving the run as it was) when triangles would meet
+  // just after `at`.
+  void set_motion(std::size_t object, const scene::Motion& motion, const mpq_class& at) {
+    if (stopped_) throw std::invalid_argument("set_motion: the run has stopped");
+    if (object >= scene_.objects.size()) throw std::invalid_argument("set_motion: no object " + std::to_string(object));
+    if (motion.kind == scene::Motion::Kind::vertices && motion.vertices.size() != scene_.objects[object].vertex_count)
+      throw std::invalid_argument("set_motion: the motion gives " + std::to_string(motion.vertices.size()) +
+                                  " vertices, the object has " + std::to_string(scene_.objects[object].vertex_count));
+    const Time t = k_.time(from_rational<FT>(at));
+    const std::optional<Time> next = queue_->first_time();
+    if (k_.compare(t, now_) < 0 || (next && k_.compare(t, *next) >= 0) || past_limit(t))
+      throw std::invalid_argument("set_motion: the instant " + at.get_str() +
+                                  " is not in [now, next event) within the time limit");
+    const scene::Motion old = scene_.objects[object].motion;
+    scene_.objects[object].motion = motion;
+    make_classifiers();
+    std::optional<tree::Kvd_tree> after = try_build(t);
+    if (!after) {
+      scene_.objects[object].motion = old;
+      make_classifiers();
+      throw tree::Build_error("set_motion: at t = " + at.get_str() + ", " + build_error_);
+    }
+    const bool changed = tree::first_difference(current_, *after).has_value();
+    current_ = std::move(*after);
+    now_ = t;
+    sim_.motion_changes.push_back({at, t, {object}, {motion}, sim_.batches.size(), "flight-plan change", changed});
+    if (o_.validate == Validation::end) before_last_.reset();  // the tree in force now has new motions
+    make_certificates();
+  }
+
   // The run so far, as it stands.
   const Simulation<Time>& so_far() const { return sim_; }
   const K& kernel() const { return k_; }
