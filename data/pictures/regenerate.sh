@@ -2,7 +2,8 @@
 # Remakes the pictures of kvd view and kvd animate that the README shows: two
 # screenshots of viewer pages (headless Chromium, through
 # tests/viewer/check_page.py, which checks the pages too), and a sampled and a
-# held frame and a GIF of an animation (ffmpeg).
+# held frame and a GIF of an animation (ffmpeg), and the plot of the README's
+# Python example (matplotlib).
 # Usage: data/pictures/regenerate.sh [path/to/kvd] (default: build/kvd of this checkout).
 set -euo pipefail
 kvd="$(realpath "${1:-$(dirname "$0")/../../build/kvd}")"
@@ -39,4 +40,7 @@ ffmpeg -loglevel error -y -i "$tmp/collisions.mp4" -vf "select=eq(n\,$sampled)" 
 ffmpeg -loglevel error -y -i "$tmp/collisions.mp4" -vf "select=eq(n\,$held)" -frames:v 1 data/pictures/animate-collisions-event.png
 "$kvd" animate data/collisions.json --view "$view" --events 20 --frames 40 --hold 4 --size 320 \
   --out data/pictures/animate-collisions.gif > /dev/null
-echo "data/pictures: viewer and animation pictures remade"
+# The README's Python example: the updates of a run, plotted with matplotlib.
+PYTHONPATH="$(dirname "$kvd")/python" $py examples/python/plot_updates.py data/uniform-scale-100.json \
+  data/pictures/python-updates.png > /dev/null
+echo "data/pictures: viewer, animation and Python pictures remade"

@@ -1,0 +1,299 @@
+// The Python module `kvd` (pybind11): scenes, the static KVD at an instant,
+// and the kinetic KVD stepped from Python, on the exact, double or MPFR
+// kernel. Exact numbers cross as fractions.Fraction (and exact times also
+// as the library's text); the module is a thin client of include/kvd/kvd.hpp.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+#include <variant>
+
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kvd.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using kvd::scene::Scene;
+
+// Any number Python's Fraction takes (int, Fraction, float exactly, "1/3", "0.25").
+mpq_class to_mpq(const py::handle& x) {
+  const py::object fraction = py::module_::import("fractions").attr("Fraction")(x);
+  mpq_class q(py::str(fraction).cast<std::string>());
+  q.canonicalize();
+  return q;
+}
+
+py::object to_fraction(const mpq_class& q) { return py::module_::import("fractions").attr("Fraction")(q.get_str()); }
+
+// A scene from Python lists: turned into kvd-scene/1 text with exact
+// numbers, so that it goes through the file format's full validation.
+Scene scene_from_lists(const py::list& objects, const py::handle& start, const py::handle& end, std::uint64_t seed) {
+  const auto number = [](const py::handle& x) { return "\"" + to_mpq(x).get_str() + "\""; };
+  const auto list = [](const py::handle& items, const auto& item) {
+    std::string out = "[";
+    bool first = true;
+    for (const auto& i : py::reinterpret_borrow<py::list>(items)) {
+      out += (first ? "" : ", ") + item(i);
+      first = false;
+    }
+    return out + "]";
+  };
+  std::ostringstream text;
+  text << "{\"format\": \"kvd-scene/1\", \"priority\": {\"seed\": " << seed << "}, \"time\": {\"start\": "
+       << number(start) << (end.is_none() ? "" : ", \"end\": " + number(end)) << "}, \"objects\": [";
+  bool first = true;
+  for (const auto& o : objects) {
+    const auto d = py::reinterpret_borrow<py::dict>(o);
+    text << (first ? "" : ", ") << "{\"vertices\": "
+         << list(d["vertices"], [&](const py::handle& v) { return list(v, number); })
+         << ", \"triangles\": " << list(d["triangles"], [&](const py::handle& t) {
+              return list(t, [](const py::handle& i) { return std::to_string(i.cast<std::size_t>()); });
+            });
+    if (d.contains("translation"))
+      text << ", \"motion\": {\"translation\": "
+           << list(d["translation"], [&](const py::handle& p) { return list(p, number); }) << "}";
+    text << "}";
+    first = false;
+  }
+  text << "]}";
+  return kvd::scene::read_scene(text.str(), "the scene given to kvd.scene");
+}
+
+py::dict statistics(const kvd::tree::Kvd_tree& t) {
+  const auto s = t.statistics();
+  py::dict d;
+  d["nodes"] = s.nodes;
+  d["p_nodes"] = s.p_nodes;
+  d["e_nodes"] = s.e_nodes;
+  d["t_nodes"] = s.t_nodes;
+  d["height"] = s.height;
+  d["structure_hash"] = kvd::tree::structure_hash(t);
+  return d;
+}
+
+// The T-nodes of `order` as {"triangle": id, "vertices": [[x, y, z], ...]}
+// with exact Fraction coordinates at t.
+py::list fragments(const kvd::predicates::Classifier<kvd::Exact_kernel>& c, const kvd::tree::Kvd_tree& t,
+                   const std::vector<int>& order, const mpq_class& at) {
+  py::list out;
+  for (int i : order) {
+    const auto& n = t.nodes[static_cast<std::size_t>(i)];
+    py::list corners;
+    for (const auto& v : std::get<kvd::tree::Triangle_fragment>(n.fragment).corners) {
+      const auto p = c.position(v);
+      const mpq_class w = p[3](at);
+      corners.append(py::make_tuple(to_fraction(p[0](at) / w), to_fraction(p[1](at) / w), to_fraction(p[2](at) / w)));
+    }
+    py::dict f;
+    f["triangle"] = n.cut.id;
+    f["vertices"] = corners;
+    out.append(f);
+  }
+  return out;
+}
+
+kvd::Point4<mpq_class> view_point(const py::sequence& v) {
+  if (v.size() != 3) throw py::value_error("a view is three numbers (x, y, z)");
+  return {{to_mpq(v[0]), to_mpq(v[1]), to_mpq(v[2]), mpq_class(1)}};
+}
+
+py::dict build(const Scene& s, const py::handle& t, const py::object& view) {
+  const mpq_class at = t.is_none() ? s.start : to_mpq(t);
+  const kvd::Exact_kernel k;
+  const kvd::predicates::Classifier<kvd::Exact_kernel> c(k, s);
+  const kvd::tree::Kvd_tree tree = kvd::tree::build(c, kvd::Exact_time(at));
+  py::dict d = statistics(tree);
+  if (!view.is_none()) d["order"] = fragments(c, tree, kvd::query::back_to_front(c, tree, view_point(view), at), at);
+  return d;
+}
+
+// An instant as Python sees it: the library's text, a float, and for an
+// exact time its isolating interval as Fractions (lo == hi for a rational).
+template <class K>
+void put_time(py::dict& d, const K& k, const typename K::Time& t, const char* key) {
+  d[key] = k.to_string(t);
+  d[(std::string(key) + "_approx").c_str()] = k.to_double(t);
+  if constexpr (std::is_same_v<K, kvd::Exact_kernel>) {
+    const auto [lo, hi] = t.canonical_interval();
+    d[(std::string(key) + "_interval").c_str()] = py::make_tuple(to_fraction(lo), to_fraction(hi));
+  }
+}
+
+// The stepping KVD behind kvd.Kinetic, whatever its kernel.
+class Any_kinetic {
+public:
+  virtual ~Any_kinetic() = default;
+  virtual py::object advance() = 0;
+  virtual std::size_t advance_to(const py::handle& t) = 0;
+  virtual void set_motion(std::size_t object, const py::list& translation, const py::handle& at) = 0;
+  virtual py::list events() const = 0;
+  virtual py::dict now() const = 0;
+  virtual py::object next_event_time() const = 0;
+  virtual std::string structure_hash() const = 0;
+  virtual py::list back_to_front(const py::sequence& view) const = 0;
+  virtual py::dict summary() const = 0;
+};
+
+template <class K>
+class Kinetic_of final : public Any_kinetic {
+public:
+  Kinetic_of(const K& k, const Scene& s, const kvd::kinetic::Options& o) : k_(k), kds_(k_, s, o) {}
+
+  py::object advance() override {
+    const auto* b = kds_.advance();
+    return b ? py::object(batch(*b)) : py::object(py::none());
+  }
+  std::size_t advance_to(const py::handle& t) override { return kds_.advance_to(kvd::from_rational<typename K::FT>(to_mpq(t))); }
+  void set_motion(std::size_t object, const py::list& translation, const py::handle& at) override {
+    if (translation.size() != 3) throw py::value_error("a translation is three polynomials (x, y, z)");
+    kvd::scene::Motion m;
+    m.kind = kvd::scene::Motion::Kind::translation;
+    for (std::size_t j = 0; j < 3; ++j) {
+      std::vector<mpq_class> c;
+      for (const auto& x : py::reinterpret_borrow<py::list>(translation[j])) c.push_back(to_mpq(x));
+      m.translation[j] = kvd::scene::QPoly(std::move(c));
+    }
+    kds_.set_motion(object, m, to_mpq(at));
+  }
+  py::list events() const override {
+    py::list out;
+    for (const auto& b : kds_.record().batches) out.append(batch(b));
+    return out;
+  }
+  py::dict now() const override {
+    py::dict d;
+    put_time(d, k_, kds_.now(), "time");
+    return d;
+  }
+  py::object next_event_time() const override {
+    const auto t = kds_.next_event_time();
+    if (!t) return py::none();
+    py::dict d;
+    put_time(d, k_, *t, "time");
+    return d;
+  }
+  std::string structure_hash() const override { return kds_.structure_hash(); }
+  py::list back_to_front(const py::sequence& view) const override {
+    const auto v = view_point(view);
+    const kvd::Point4<typename K::FT> eye{{kvd::from_rational<typename K::FT>(v[0]), kvd::from_rational<typename K::FT>(v[1]),
+                                           kvd::from_rational<typename K::FT>(v[2]), typename K::FT(1)}};
+    py::list out;
+    for (int i : kds_.back_to_front(eye)) out.append(kds_.tree().nodes[static_cast<std::size_t>(i)].cut.id);
+    return out;
+  }
+  py::dict summary() const override {
+    const auto& r = kds_.record();
+    py::dict d;
+    d["batches"] = r.batches.size();
+    d["events"] = r.failures;
+    d["motion_changes"] = r.motion_changes.size();
+    d["validations"] = r.validations;
+    d["validation_failures"] = r.validation_failures;
+    d["valid"] = r.valid();
+    d["structure_hash"] = r.structure_hash;
+    static const char* const stops[] = {"events", "limit", "exhausted", "collision", "stuck"};
+    d["stopped"] = kds_.stopped() ? py::object(py::str(stops[static_cast<int>(r.stopped)])) : py::object(py::none());
+    return d;
+  }
+
+private:
+  py::dict batch(const kvd::kinetic::Batch<typename K::Time>& b) const {
+    py::dict d;
+    put_time(d, k_, b.time, "time");
+    py::list failing;
+    for (const auto& f : b.failing) failing.append(py::make_tuple(kvd::kinetic::to_string(f.type), f.nodes));
+    d["failing"] = failing;
+    d["changed"] = b.changed;
+    d["structure_hash"] = b.structure;
+    d["nodes_touched"] = b.nodes_touched;
+    d["certificates_recomputed"] = b.certificates_recomputed;
+    d["update_seconds"] = b.tree_seconds + b.certificate_seconds + b.record_seconds;
+    return d;
+  }
+
+  K k_;
+  kvd::Kinetic_kvd<K> kds_;
+};
+
+std::unique_ptr<Any_kinetic> make_kinetic(const Scene& s, const std::string& kernel, std::size_t events,
+                                          const std::string& validate, const py::handle& until) {
+  kvd::kinetic::Options o;
+  o.max_events = events;
+  if (validate == "every") o.validate = kvd::kinetic::Validation::every;
+  else if (validate == "end") o.validate = kvd::kinetic::Validation::end;
+  else if (validate == "none") o.validate = kvd::kinetic::Validation::none;
+  else throw py::value_error("validate is 'every', 'end' or 'none', not '" + validate + "'");
+  if (!until.is_none()) o.until = to_mpq(until);
+  if (kernel == "exact") return std::make_unique<Kinetic_of<kvd::Exact_kernel>>(kvd::Exact_kernel(), s, o);
+  if (kernel == "double") return std::make_unique<Kinetic_of<kvd::Double_kernel>>(kvd::Double_kernel(), s, o);
+  if (kernel.rfind("mpfr:", 0) == 0) {
+    unsigned long bits = 0;
+    try {
+      bits = std::stoul(kernel.substr(5));
+    } catch (const std::exception&) {
+    }
+    if (bits < 2 || bits > 65536) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536");
+    return std::make_unique<Kinetic_of<kvd::Mpfr_kernel>>(kvd::Mpfr_kernel(static_cast<unsigned>(bits)), s, o);
+  }
+  throw py::value_error("kernel is 'exact', 'double' or 'mpfr:BITS', not '" + kernel + "'");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(kvd, m) {
+  m.doc() = "Kinetic Vertical Decomposition trees of moving triangles, decided exactly (kvd/kvd.hpp)";
+  py::register_exception<kvd::scene::Scene_error>(m, "SceneError", PyExc_ValueError);
+  py::register_exception<kvd::tree::Build_error>(m, "BuildError", PyExc_ValueError);
+
+  py::class_<Scene>(m, "Scene", "A scene of moving triangles (SCENE_FORMAT.md)")
+      .def_property_readonly("triangles", [](const Scene& s) { return s.triangles.size(); })
+      .def_property_readonly("vertices", [](const Scene& s) { return s.rest.size(); })
+      .def_property_readonly("objects", [](const Scene& s) { return s.objects.size(); })
+      .def_property_readonly("start", [](const Scene& s) { return to_fraction(s.start); })
+      .def_property_readonly("end", [](const Scene& s) { return s.end ? to_fraction(*s.end) : py::object(py::none()); })
+      .def("__repr__", [](const Scene& s) {
+        return "<kvd.Scene: " + std::to_string(s.objects.size()) + " objects, " + std::to_string(s.triangles.size()) +
+               " triangles>";
+      });
+
+  m.def(
+      "load_scene",
+      [](const std::string& path, const py::object& seed) {
+        kvd::scene::Load_options o;
+        if (!seed.is_none()) o.seed = seed.cast<std::uint64_t>();
+        return kvd::scene::load_scene(path, o);
+      },
+      py::arg("path"), py::arg("seed") = py::none(),
+      "Reads a kvd-scene/1 file (seed: another priority seed); SceneError (a ValueError) names the place\n"
+      "of a bad input.");
+  m.def(
+      "scene",
+      [](const py::list& objects, const py::object& start, const py::object& end, std::uint64_t seed) {
+        return scene_from_lists(objects, start, end, seed);
+      },
+      py::arg("objects"), py::arg("start") = 0, py::arg("end") = py::none(), py::arg("seed") = 0,
+      "A scene from lists: objects = [{'vertices': [[x, y, z], ...], 'triangles': [[i, j, k], ...],\n"
+      "'translation': [[x0, x1, ...], [y0, ...], [z0, ...]]}, ...], numbers exact (int, Fraction, '1/3').");
+  m.def("build", &build, py::arg("scene"), py::arg("t") = py::none(), py::arg("view") = py::none(),
+        "The KVD just after t (default: the scene's start), exactly: node counts, height, structure_hash,\n"
+        "and with view=(x, y, z) the fragments back to front with Fraction coordinates.");
+
+  py::class_<Any_kinetic>(m, "Kinetic", "The kinetic KVD, stepped event by event")
+      .def(py::init(&make_kinetic), py::arg("scene"), py::arg("kernel") = "exact", py::arg("events") = 100,
+           py::arg("validate") = "every", py::arg("until") = py::none())
+      .def("advance", &Any_kinetic::advance, "Processes the next batch and returns it, or None when the run stops.")
+      .def("advance_to", &Any_kinetic::advance_to, py::arg("t"), "Processes every batch at a time <= t; how many.")
+      .def("set_motion", &Any_kinetic::set_motion, py::arg("object"), py::arg("translation"), py::arg("at"),
+           "A flight-plan change: the object translates by the given polynomials from the instant `at` on.")
+      .def_property_readonly("events", &Any_kinetic::events, "The batches processed so far.")
+      .def_property_readonly("now", &Any_kinetic::now)
+      .def_property_readonly("next_event_time", &Any_kinetic::next_event_time)
+      .def_property_readonly("structure_hash", &Any_kinetic::structure_hash)
+      .def("back_to_front", &Any_kinetic::back_to_front, py::arg("view"),
+           "The triangle ids of the tree in force's fragments, back to front from view = (x, y, z).")
+      .def_property_readonly("summary", &Any_kinetic::summary);
+}

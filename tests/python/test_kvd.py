@@ -1,0 +1,121 @@
+"""The Python module `kvd` against the kvd command line, which it must agree
+with exactly: counts, structure hashes, the painter's order with exact
+coordinates, and the batches of a kinetic run. Run by CTest python_module
+(environment: PYTHONPATH holds the module, KVD_EXECUTABLE and KVD_SOURCE_DIR)."""
+import json
+import os
+import subprocess
+from fractions import Fraction
+
+import pytest
+
+import kvd
+
+KVD = os.environ["KVD_EXECUTABLE"]
+DATA = os.path.join(os.environ["KVD_SOURCE_DIR"], "data")
+
+
+def cli(*args):
+    return subprocess.run([KVD, *args], check=True, capture_output=True, text=True).stdout
+
+
+def scene_file(name):
+    return os.path.join(DATA, name)
+
+
+@pytest.mark.parametrize("name", ["two-triangles.json", "boxes.json", "cycle3.json", "uniform-scale-25.json"])
+def test_build_agrees_with_kvd_build(name):
+    s = kvd.load_scene(scene_file(name))
+    ours = kvd.build(s, Fraction(1, 3))
+    theirs = json.loads(cli("build", scene_file(name), "--time", "1/3", "--json"))
+    assert ours["structure_hash"] == theirs["structure_hash"]
+    assert ours["nodes"] == theirs["nodes"]
+    assert ours["height"] == theirs["height"]
+
+
+def test_back_to_front_order_is_kvd_orders_in_fractions():
+    name = scene_file("cycle3.json")
+    ours = kvd.build(kvd.load_scene(name), 0, view=(1, 2, 30))["order"]
+    theirs = json.loads(cli("order", name, "--view", "1,2,30", "--json"))["fragments"]
+    assert [f["triangle"] for f in ours] == [f["triangle"] for f in theirs]
+    for a, b in zip(ours, theirs):
+        assert all(isinstance(x, Fraction) for v in a["vertices"] for x in v)
+        assert [tuple(v) for v in a["vertices"]] == [tuple(Fraction(x) for x in v) for v in b["vertices"]]
+
+
+def test_a_scene_from_lists_is_the_scene_from_its_file():
+    # data/two-triangles.json written as Python lists with exact numbers.
+    text = json.load(open(scene_file("two-triangles.json")))
+    objects = []
+    for o in text["objects"]:
+        obj = {"vertices": [[Fraction(x) for x in v] for v in o["vertices"]], "triangles": o["triangles"]}
+        if "motion" in o:
+            obj["translation"] = [[Fraction(c) for c in (p if isinstance(p, list) else [p])]
+                                  for p in o["motion"]["translation"]]
+        objects.append(obj)
+    ours = kvd.scene(objects, start=Fraction(text["time"]["start"]), end=text["time"].get("end"),
+                     seed=text.get("priority", {}).get("seed", 0))
+    file = kvd.load_scene(scene_file("two-triangles.json"))
+    assert (ours.triangles, ours.vertices, ours.objects) == (file.triangles, file.vertices, file.objects)
+    for t in (0, Fraction(1, 2), 1):
+        assert kvd.build(ours, t)["structure_hash"] == kvd.build(file, t)["structure_hash"]
+
+
+def test_bad_input_raises_value_errors_that_name_the_place():
+    with pytest.raises(ValueError, match="/objects/0/triangles/0/2"):
+        kvd.scene([{"vertices": [[0, 0, 0], [1, 0, 0]], "triangles": [[0, 1, 2]]}])
+    with pytest.raises(ValueError, match="kernel"):
+        kvd.Kinetic(kvd.load_scene(scene_file("boxes.json")), kernel="quad")
+    with pytest.raises(ValueError):
+        kvd.load_scene(os.path.join(DATA, "README.md"))
+
+
+@pytest.mark.parametrize("name", ["uniform-scale-25.json", "collisions.json"])
+def test_stepping_gives_the_batches_of_kvd_simulate(name, tmp_path):
+    trace = tmp_path / "trace"
+    summary = json.loads(cli("simulate", scene_file(name), "--events", "30", "--trace", str(trace), "--json"))
+    k = kvd.Kinetic(kvd.load_scene(scene_file(name)), events=30)
+    batches = []
+    while (b := k.advance()) is not None:
+        batches.append(b)
+        lo, hi = b["time_interval"]
+        assert lo <= Fraction(b["time_approx"]) <= hi or abs(b["time_approx"] - float(lo)) < 1e-12
+        assert b["structure_hash"] == k.structure_hash  # the tree in force is the batch's
+    traced = {}
+    for line in open(trace):
+        e = json.loads(line)
+        if "batch" in e:
+            traced.setdefault(e["batch"], (e["time"], []))[1].append((e["certificate"], e["nodes"]))
+    assert [(b["time"], b["failing"]) for b in batches] == [traced[i] for i in range(len(traced))]
+    assert k.summary["structure_hash"] == summary["structure_hash"]
+    assert k.summary["valid"] and k.summary["stopped"] == summary["stopped"]
+    assert k.events == batches
+
+
+def test_floating_point_kernels_step_and_report_their_times():
+    s = kvd.load_scene(scene_file("uniform-scale-25.json"))
+    for kernel in ("double", "mpfr:113"):
+        k = kvd.Kinetic(s, kernel=kernel, events=20)
+        times = []
+        while (b := k.advance()) is not None:
+            times.append(b["time_approx"])
+            assert "time_interval" not in b
+        assert times == sorted(times) and len(times) > 5
+
+
+def test_set_motion_turns_an_object_back():
+    s = kvd.load_scene(scene_file("uniform-scale-25.json"))
+    k = kvd.Kinetic(s, events=40)
+    k.advance_to(Fraction(1, 5))
+    at = Fraction(1, 5)
+    before = len(k.events)
+    # Object 3 stops where it is at 1/5: a constant translation, its value then.
+    text = json.load(open(scene_file("uniform-scale-25.json")))
+    motion = text["objects"][3]["motion"]["translation"]
+    still = [[sum(Fraction(c) * at ** i for i, c in enumerate(p if isinstance(p, list) else [p]))] for p in motion]
+    k.set_motion(3, still, at)
+    while k.advance() is not None:
+        pass
+    assert k.summary["valid"] and k.summary["motion_changes"] == 1 and len(k.events) > before
+    with pytest.raises(ValueError):
+        k.set_motion(99, still, at)
