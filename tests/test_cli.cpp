@@ -440,7 +440,7 @@ TEST_CASE("kvd view and kvd animate refuse bad input with status 2 and write not
   }
   CHECK(run("view " + dir + "view-altered.trace --scene " + data + "boxes.json --out " + page).status == 2);
   CHECK(!std::ifstream(page).good());
-  CHECK(run("animate " + data + "boxes.json --out " + film).status == 2);                  // no --view
+  CHECK(run("animate " + data + "boxes.json --view 1,2 --out " + film).status == 2);      // not a point
   CHECK(run("animate " + data + "boxes.json --view 1,2,3").status == 2);                  // no --out
   CHECK(run("animate " + data + "boxes.json --view 1,2,3 --out " + dir + "x.avi").status == 2);
   CHECK(run("animate " + data + "boxes.json --view 1,2,3 --fps 0 --out " + film).status == 2);

@@ -1,4 +1,6 @@
 // kvd animate SCENE --view X,Y,Z --out FILE.svg|.mp4|.gif: a run as a film.
+#include <algorithm>
+#include <array>
 #include <iostream>
 
 #include "animation.hpp"
@@ -8,13 +10,14 @@ namespace kvd::cli {
 
 namespace {
 const char* const animate_help =
-    "usage: kvd animate SCENE --view X,Y,Z --out FILE.svg|FILE.mp4|FILE.gif\n"
+    "usage: kvd animate SCENE --out FILE.svg|FILE.mp4|FILE.gif [--view X,Y,Z]\n"
     "                   [--events N] [--until T] [--fps N] [--frames N] [--hold N]\n"
     "                   [--cells] [--size PX] [--seed S] [--collisions reverse|stop]\n"
     "\n"
     "Runs the exact kinetic KVD (as kvd simulate, validating every batch) and\n"
-    "films it from (X, Y, Z), looking at the scene's centre at the start with z\n"
-    "up: every frame paints the triangle fragments back to front with the tree\n"
+    "films it from (X, Y, Z) (default: in front, to the left and above, at\n"
+    "three times the scene's size), looking at the scene's centre at the start\n"
+    "with z up: every frame paints the triangle fragments back to front with the tree\n"
     "in force at its instant. Frames are sampled evenly over the run, and just\n"
     "after every batch a frame is held with the failing certificates' features\n"
     "marked in red and named, so that every event of the run appears. The\n"
@@ -37,6 +40,27 @@ const char* const animate_help =
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// In front of the scene at its start, to the left and above: its centre
+// plus (-2, -3, 2) times the largest extent of its vertices (exact).
+std::array<mpq_class, 3> default_view(const scene::Scene& s) {
+  std::array<mpq_class, 3> lo, hi;
+  for (std::size_t v = 0; v < s.rest.size(); ++v) {
+    const auto p = s.position_at(v, s.start);
+    for (int j = 0; j < 3; ++j) {
+      const mpq_class x = p[j] / p[3];
+      const auto i = static_cast<std::size_t>(j);
+      if (v == 0 || x < lo[i]) lo[i] = x;
+      if (v == 0 || x > hi[i]) hi[i] = x;
+    }
+  }
+  mpq_class extent = 1;
+  for (std::size_t j = 0; j < 3; ++j) extent = std::max(extent, mpq_class(hi[j] - lo[j]));
+  const std::array<int, 3> away{-2, -3, 2};
+  std::array<mpq_class, 3> eye;
+  for (std::size_t j = 0; j < 3; ++j) eye[j] = (lo[j] + hi[j]) / 2 + away[j] * extent;
+  return eye;
 }
 
 int bounded(Args& args, const std::string& flag, std::uint64_t lo, std::uint64_t hi) {
@@ -77,9 +101,8 @@ int animate(Args& args) {
     throw Usage_error("kvd animate: --out must name an .svg, .mp4 or .gif file");
   if (!svg && !query::png_supported())
     throw Usage_error("kvd animate: this build has no PNG frames (cairo was not found when it was built); use .svg");
-  const auto& eye = sa.required_view("animate");
-  a.view = eye;
   const scene::Scene s = sa.load_scene("animate");
+  a.view = sa.view ? *sa.view : default_view(s);
   if (o.until) require_in_span("animate", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd animate");
   const view::Recorded_run run = with_disjoint_triangles("animate", *sa.path, [&] { return view::record_run(s, o); });
