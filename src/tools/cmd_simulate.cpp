@@ -29,7 +29,7 @@ const char* const simulate_help =
     "compared with a fresh build at a rational time strictly between them (a\n"
     "difference is a missed event: a failed check); with end, only before the\n"
     "last batch. Prints the statistics of the thesis's Figures\n"
-    "8.5-8.7; progress goes to stderr every 100 batches.\n"
+    "8.5-8.7; on a long run, progress goes to stderr every two seconds.\n"
     "\n"
     "  --update U        local (default): the thesis's local update (thesis 7.3),\n"
     "                    which moves only the sites of the failing certificates'\n"
