@@ -44,14 +44,42 @@
       if (c.material) c.material.dispose();
     }
   }
-  function polygonMesh(ps, colour, opacity) {
-    const g = new THREE.Geometry();
-    g.vertices = ps;
-    for (let i = 1; i + 1 < ps.length; ++i) g.faces.push(new THREE.Face3(0, i, i + 1));
-    g.computeFaceNormals();
-    const m = new THREE.MeshLambertMaterial({ color: colour, side: THREE.DoubleSide, transparent: opacity < 1,
-                                              opacity: opacity, depthWrite: opacity >= 1 });
-    return new THREE.Mesh(g, m);
+  // Shapes gathered into one mesh and one set of line segments per group,
+  // coloured per vertex, so that a frame is a few draw calls rather than one
+  // per node.
+  class Gathered {
+    constructor() { this.tri = []; this.triColour = []; this.line = []; this.lineColour = []; }
+    polygon(ps, colour) {
+      const c = new THREE.Color(colour);
+      for (let i = 1; i + 1 < ps.length; ++i)
+        for (const p of [ps[0], ps[i], ps[i + 1]]) { this.tri.push(p.x, p.y, p.z); this.triColour.push(c.r, c.g, c.b); }
+    }
+    outline(ps, colour, closed) {
+      const c = new THREE.Color(colour);
+      for (let i = 0; i + (closed ? 0 : 1) < ps.length; ++i) {
+        const a = ps[i], b = ps[(i + 1) % ps.length];
+        this.line.push(a.x, a.y, a.z, b.x, b.y, b.z);
+        this.lineColour.push(c.r, c.g, c.b, c.r, c.g, c.b);
+      }
+    }
+    addTo(group, opacity) {
+      const geometry = (positions, colours) => {
+        const g = new THREE.BufferGeometry();
+        g.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
+        g.setAttribute('color', new THREE.Float32BufferAttribute(colours, 3));
+        return g;
+      };
+      if (this.tri.length) {
+        const g = geometry(this.tri, this.triColour);
+        g.computeVertexNormals();
+        group.add(new THREE.Mesh(g, new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide,
+                                                                    transparent: opacity < 1, opacity: opacity,
+                                                                    depthWrite: opacity >= 1 })));
+      }
+      if (this.line.length)
+        group.add(new THREE.LineSegments(geometry(this.line, this.lineColour),
+                                         new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })));
+    }
   }
   function lineLoop(ps, colour, closed) {
     const g = new THREE.Geometry();
@@ -79,11 +107,21 @@
   controls.target.copy(centre);
   controls.update();
 
+  // Drawn on demand (a move of the camera, a new frame, a layer toggled),
+  // not in a loop: software WebGL would keep a core busy for nothing.
+  let pending = false;
+  function render() {
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => { pending = false; renderer.render(scene3, camera); });
+  }
+  controls.addEventListener('change', render);
   function resize() {
     const w = holder.clientWidth || 400, h = holder.clientHeight || 400;
     renderer.setSize(w, h);
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
+    render();
   }
   window.addEventListener('resize', resize);
 
@@ -177,15 +215,20 @@
     const frame = data.frames[f];
     const changed = new Set(frame.changed);
     state.shapes = shapes(frame);
+    const fragments = new Gathered();
+    const walls = { P: [new Gathered(), new Gathered()], E: [new Gathered(), new Gathered()], T: [new Gathered(), new Gathered()] };
     state.shapes.forEach((s) => {
-      if (s.wall.length) layers[s.kind].add(polygonMesh(s.wall, wallColour[s.kind], changed.has(s.entry) ? 0.35 : 0.12));
+      const hot = changed.has(s.entry);
+      if (s.wall.length) walls[s.kind][hot ? 1 : 0].polygon(s.wall, wallColour[s.kind]);
       if (s.kind === 'T' && s.fragment.length >= 3) {
-        layers.fragments.add(polygonMesh(s.fragment, palette[data.objects[s.id] % palette.length], 1));
-        layers.fragments.add(lineLoop(s.fragment, changed.has(s.entry) ? 0xff8c00 : 0x555555, true));
+        fragments.polygon(s.fragment, palette[data.objects[s.id] % palette.length]);
+        fragments.outline(s.fragment, hot ? 0xff8c00 : 0x555555, true);
       } else if (s.kind === 'E' && s.fragment.length === 2) {
-        layers.fragments.add(lineLoop(s.fragment, changed.has(s.entry) ? 0xff8c00 : wallColour.E, false));
+        fragments.outline(s.fragment, hot ? 0xff8c00 : wallColour.E, false);
       }
     });
+    fragments.addTo(layers.fragments, 1);
+    ['P', 'E', 'T'].forEach((k) => { walls[k][0].addTo(layers[k], 0.12); walls[k][1].addTo(layers[k], 0.35); });
     if (batch !== null) {
       const r = radius / 60;
       data.batches[batch].failing.forEach((c) => {
@@ -199,6 +242,7 @@
   function applyLayers() {
     layers.fragments.visible = el('show-fragments').checked;
     ['P', 'E', 'T'].forEach((k) => { layers[k].visible = el('show-' + k).checked; });
+    render();
   }
   ['fragments', 'P', 'E', 'T'].forEach((k) => el('show-' + k).addEventListener('change', applyLayers));
 
@@ -335,11 +379,6 @@
 
   resize();
   show(0, null);
-  (function loop() {
-    requestAnimationFrame(loop);
-    controls.update();
-    renderer.render(scene3, camera);
-  })();
   // For scripts and tests: select the k-th batch (from 0) as a click would.
   window.kvdViewer = { data: data, state: state, selectBatch: (k) => show(data.batches[k].frame, k) };
 })();
