@@ -119,16 +119,14 @@ public:
     const scene::Motion old = scene_.objects[object].motion;
     scene_.objects[object].motion = motion;
     make_classifiers();
-    std::optional<tree::Kvd_tree> after = try_build(t);
-    if (!after) {
+    const std::optional<bool> changed = rebuild_in_force(t);
+    if (!changed) {
       scene_.objects[object].motion = old;
       make_classifiers();
       throw tree::Build_error("set_motion: at t = " + at.get_str() + ", " + build_error_);
     }
-    const bool changed = tree::first_difference(current_, *after).has_value();
-    current_ = std::move(*after);
     now_ = t;
-    sim_.motion_changes.push_back({at, t, {object}, {motion}, sim_.batches.size(), "flight-plan change", changed});
+    sim_.motion_changes.push_back({at, t, {object}, {motion}, sim_.batches.size(), "flight-plan change", *changed});
     if (o_.validate == Validation::end) before_last_.reset();  // the tree in force now has new motions
     make_certificates();
   }
@@ -164,6 +162,7 @@ private:
   bool step_once() {
     if (events_reached()) {
       sim_.stopped = Stop::events;
+      sim_.next_failure = queue_->first_time();
       return false;
     }
     const std::optional<Time> next = queue_->first_time();
@@ -527,13 +526,21 @@ private:
     // there, so the tree in force is the tree just after r unless a
     // classification that vanished identically under the old motions (one the
     // perturbation decided) no longer does: the build says which.
-    if (std::optional<tree::Kvd_tree> after = try_build(now_)) {
-      record.tree_changed |= tree::first_difference(current_, *after).has_value();
-      current_ = std::move(*after);
-    }
+    if (const std::optional<bool> changed = rebuild_in_force(now_)) record.tree_changed |= *changed;
     if (observer_) observer_->reversal(step);
     make_certificates();
     return true;
+  }
+
+  // After a change of motions: the tree just after t under the motions now
+  // in force replaces the tree in force. Whether it differs, or none (the
+  // tree in force stays) when triangles meet there.
+  std::optional<bool> rebuild_in_force(const Time& t) {
+    std::optional<tree::Kvd_tree> after = try_build(t);
+    if (!after) return std::nullopt;
+    const bool changed = tree::first_difference(current_, *after).has_value();
+    current_ = std::move(*after);
+    return changed;
   }
 
   // The reversal time: kinetic::reversal_time, moved past any root of a

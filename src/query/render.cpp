@@ -86,18 +86,22 @@ std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c
   return out;
 }
 
-std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c, const tree::Kvd_tree& tree,
-                                   const Point4<mpq_class>& view, const mpq_class& t, const Render_options& o) {
-  const scene::Scene& s = c.motion().scene();
-  const D3 eye{mpq_class(view[0] / view[3]).get_d(), mpq_class(view[1] / view[3]).get_d(),
-               mpq_class(view[2] / view[3]).get_d()};
+Camera::D3 centroid(const scene::Scene& s, const mpq_class& t) {
   D3 centre{0, 0, 0};
   for (std::size_t v = 0; v < s.rest.size(); ++v) {
     const auto p = s.position_at(v, t);
     for (int j = 0; j < 3; ++j)
       centre[static_cast<std::size_t>(j)] += mpq_class(p[j] / p[3]).get_d() / static_cast<double>(s.rest.size());
   }
-  Camera camera(eye, centre, o.size);
+  return centre;
+}
+
+std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c, const tree::Kvd_tree& tree,
+                                   const Point4<mpq_class>& view, const mpq_class& t, const Render_options& o) {
+  const scene::Scene& s = c.motion().scene();
+  const D3 eye{mpq_class(view[0] / view[3]).get_d(), mpq_class(view[1] / view[3]).get_d(),
+               mpq_class(view[2] / view[3]).get_d()};
+  Camera camera(eye, centroid(s, t), o.size);
   std::vector<Painted_polygon> out = paint(c, tree, view, camera, t, o);
   // Framed to the projected bounds of what is drawn.
   Camera::D2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi{-lo[0], -lo[1]};

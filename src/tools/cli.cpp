@@ -133,6 +133,10 @@ std::string seconds_since(std::chrono::steady_clock::time_point start) {
   return buf;
 }
 
+bool ends_with(const std::string& name, const std::string& tail) {
+  return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+}
+
 std::string json_string(const std::string& s) { return nlohmann::json(s).dump(); }
 
 }  // namespace kvd::cli

@@ -182,6 +182,9 @@ std::function<void(std::size_t batches, std::size_t failures)> progress_every_fe
 // Seconds elapsed since `start`, with microsecond digits ("0.012345").
 std::string seconds_since(std::chrono::steady_clock::time_point start);
 
+// Whether a file name ends with `tail` (".svg"): which output to write.
+bool ends_with(const std::string& name, const std::string& tail);
+
 // JSON string literal for s (quotes and escapes).
 std::string json_string(const std::string& s);
 

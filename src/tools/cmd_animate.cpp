@@ -38,10 +38,6 @@ const char* const animate_help =
     "at all. Exit status: 0 on success, 1 on a failed validation, 2 on bad input\n"
     "(or no ffmpeg for a video).\n";
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 // In front of the scene at its start, to the left and above: its centre
 // plus (-2, -3, 2) times the largest extent of its vertices (exact).
 std::array<mpq_class, 3> default_view(const scene::Scene& s) {
@@ -113,7 +109,8 @@ int animate(Args& args) {
   const auto frames = view::animation_frames(run, a, progress_every_few_seconds("kvd animate", "frames drawn"));
   std::string bytes;
   try {
-    bytes = svg ? view::animated_svg(frames, a) : view::encoded_video(frames, a, *out);
+    bytes = svg ? view::animated_svg(frames, a)
+                : view::encoded_video(frames, a, ends_with(*out, ".gif") ? view::Video::gif : view::Video::mp4);
   } catch (const std::runtime_error& e) {
     throw Usage_error("kvd animate: " + std::string(e.what()));
   }

@@ -48,10 +48,6 @@ int render(Args& args) {
   }
   const scene::Scene s = sa.load_scene("render");
   const auto& view = sa.required_view("render");
-  auto ends_with = [](const std::string& s, const char* tail) {
-    const std::string t(tail);
-    return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
-  };
   const bool png = out && ends_with(*out, ".png");
   if (out && !png && !ends_with(*out, ".svg")) throw Usage_error("kvd render: --out must name an .svg or .png file");
   if (png && !query::png_supported())

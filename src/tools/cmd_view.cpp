@@ -140,7 +140,7 @@ int view(Args& args) {
   if (!view::page_supported())
     throw Usage_error("kvd view: this build has no viewer page (Debian's libjs-three was not found when it was built)");
   if (!out) throw Usage_error("kvd view: missing --out FILE.html (see kvd view --help)");
-  if (out->size() < 5 || out->compare(out->size() - 5, 5, ".html") != 0)
+  if (!ends_with(*out, ".html"))
     throw Usage_error("kvd view: --out must name an .html file");
   if (!sa.path) throw Usage_error("kvd view: missing the SCENE or REPORT file (see kvd view --help)");
   const std::string input = *sa.path;

@@ -127,14 +127,8 @@ int run_program(const std::vector<std::string>& argv) {
 
 std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& o,
                                               const std::function<void(std::size_t, std::size_t)>& progress) {
-  const scene::Scene& s = run.scene;
-  query::Camera::D3 centre{0, 0, 0};
-  for (std::size_t v = 0; v < s.rest.size(); ++v) {
-    const auto p = s.position_at(v, s.start);
-    for (int j = 0; j < 3; ++j)
-      centre[static_cast<std::size_t>(j)] += mpq_class(p[j] / p[3]).get_d() / static_cast<double>(s.rest.size());
-  }
-  query::Camera camera({o.view[0].get_d(), o.view[1].get_d(), o.view[2].get_d()}, centre, o.render.size);
+  query::Camera camera({o.view[0].get_d(), o.view[1].get_d(), o.view[2].get_d()},
+                      query::centroid(run.scene, run.scene.start), o.render.size);
   const Point4<mpq_class> eye{{o.view[0], o.view[1], o.view[2], mpq_class(1)}};
   const auto planned = plan(run, o.sampled);
   std::vector<Animation_frame> frames;
@@ -194,8 +188,8 @@ std::string animated_svg(const std::vector<Animation_frame>& frames, const Anima
   return svg.str();
 }
 
-std::string encoded_video(const std::vector<Animation_frame>& frames, const Animation_options& o, const std::string& path) {
-  const bool gif = path.size() >= 4 && path.compare(path.size() - 4, 4, ".gif") == 0;
+std::string encoded_video(const std::vector<Animation_frame>& frames, const Animation_options& o, Video kind) {
+  const bool gif = kind == Video::gif;
   Temporary_folder folder;
   std::size_t n = 0;
   for (const auto& f : frames) {

@@ -39,9 +39,10 @@ std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Ani
 // One SVG document showing the frames in turn, looping (SMIL).
 std::string animated_svg(const std::vector<Animation_frame>& frames, const Animation_options& options);
 
-// MP4 or GIF (by the extension of `path`) through ffmpeg, as bytes; throws
-// std::runtime_error when ffmpeg is missing or fails.
-std::string encoded_video(const std::vector<Animation_frame>& frames, const Animation_options& options,
-                          const std::string& path);
+enum class Video { mp4, gif };
+
+// MP4 (H.264) or GIF through ffmpeg, as bytes; throws std::runtime_error
+// when ffmpeg is missing or fails.
+std::string encoded_video(const std::vector<Animation_frame>& frames, const Animation_options& options, Video kind);
 
 }  // namespace kvd::view

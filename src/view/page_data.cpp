@@ -17,9 +17,9 @@ using nlohmann::json;
 struct Grid {
   D3 origin;
   double unit;
-  json point(const D3& p, json& out) const {
+  // Appends p's three integers to `out`.
+  void point(const D3& p, json& out) const {
     for (std::size_t j = 0; j < 3; ++j) out.push_back(std::llround((p[j] - origin[j]) / unit));
-    return out;
   }
   json flat(const std::vector<D3>& ps) const {
     json out = json::array();

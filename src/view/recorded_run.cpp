@@ -12,11 +12,8 @@ namespace {
 class Failing_recorder : public kinetic::Observer<Exact_kernel> {
 public:
   explicit Failing_recorder(std::vector<std::vector<Failing_certificate>>& out) : out_(out) {}
-  void in_force(const Exact_time& now, const std::vector<kinetic::Certificate<Exact_kernel::Poly>>& certs) override {
+  void in_force(const Exact_time&, const std::vector<kinetic::Certificate<Exact_kernel::Poly>>& certs) override {
     current_.clear();
-    now_ = now;
-    polys_.clear();
-    for (const auto& c : certs) polys_.insert(polys_.end(), c.polys.begin(), c.polys.end());
     for (const auto& c : certs) current_.try_emplace(c.nodes, Failing_certificate{c.type, c.nodes, c.vertices, c.planes});
   }
   void batch(const kinetic::Batch<Exact_time>& b, bool) override {
@@ -28,30 +25,18 @@ public:
     out_.push_back(std::move(failing));
   }
 
-  // The first failure after the last instant the certificates were made.
-  std::optional<Exact_time> next_failure() const {
-    const Exact_kernel k;
-    std::optional<Exact_time> first;
-    for (const auto& p : polys_)
-      if (const auto r = k.next_root(p, now_); r && (!first || k.compare(*r, *first) < 0)) first = r;
-    return first;
-  }
-
 private:
   std::vector<std::vector<Failing_certificate>>& out_;
-  Exact_time now_;
-  std::vector<Exact_kernel::Poly> polys_;
   std::map<std::string, Failing_certificate> current_;
 };
 
 }  // namespace
 
 Recorded_run record_run(const scene::Scene& s, const kinetic::Options& options) {
-  Recorded_run run{s, {}, {}, {}};
+  Recorded_run run{s, {}, {}};
   Failing_recorder recorder(run.failing);
   run.sim = kinetic::simulate(Exact_kernel(), s, options, &recorder);
   run.failing.resize(run.sim.batches.size());  // a collision batch that stopped the run is not a batch
-  if (run.sim.stopped == kinetic::Stop::events) run.next_failure = recorder.next_failure();
   return run;
 }
 
@@ -94,7 +79,7 @@ std::vector<Interval> intervals(const Recorded_run& run) {
     from = b.time;
   }
   const Exact_kernel k;
-  std::optional<Exact_time> to = run.next_failure;
+  std::optional<Exact_time> to = run.sim.next_failure;
   if (run.sim.limit && k.compare(from, Exact_time(*run.sim.limit)) < 0 &&
       (!to || k.compare(Exact_time(*run.sim.limit), *to) < 0))
     to = Exact_time(*run.sim.limit);

@@ -32,9 +32,6 @@ struct Recorded_run {
   scene::Scene scene;
   kinetic::Simulation<Exact_time> sim;
   std::vector<std::vector<Failing_certificate>> failing;  // per batch, in the batch's order
-  // When the run stopped at its event count: the first failure after its
-  // last batch, which ends the interval of the tree in force at the end.
-  std::optional<Exact_time> next_failure;
 };
 
 // Runs the exact simulation with `options` (validation as they say).

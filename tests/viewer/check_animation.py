@@ -10,17 +10,13 @@
 usage: check_animation.py KVD OUTDIR SCENE VIEW [EVENTS]
 Exit 0 when every check passes, 1 otherwise.
 """
-import json
 import os
 import re
 import shutil
 import subprocess
 import sys
 
-
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
+from check_page import fail, trace_batches  # the trace's batches, as the viewer test reads them
 
 
 def main():
@@ -28,16 +24,7 @@ def main():
     events = sys.argv[5] if len(sys.argv) > 5 else "20"
     os.makedirs(outdir, exist_ok=True)
     name = os.path.splitext(os.path.basename(scene))[0]
-    trace = os.path.join(outdir, name + ".trace")
-    subprocess.run([kvd, "simulate", scene, "--events", events, "--validate", "none", "--trace", trace],
-                   check=True, stdout=subprocess.DEVNULL)
-    batches = []
-    for line in open(trace):
-        e = json.loads(line)
-        if "batch" in e:
-            if len(batches) <= e["batch"]:
-                batches.append((e["time"], []))
-            batches[e["batch"]][1].append(e["certificate"] + " " + e["nodes"])
+    batches = trace_batches(kvd, scene, events, outdir)
     svg = os.path.join(outdir, name + ".svg")
     frames, hold = 30, 4
     subprocess.run([kvd, "animate", scene, "--view", view, "--events", events, "--frames", str(frames), "--hold",

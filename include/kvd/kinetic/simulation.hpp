@@ -125,6 +125,9 @@ struct Simulation {
   std::optional<std::string> collision;  // triangles meeting: the simulation stops there
   std::vector<Motion_change<Time>> motion_changes;  // the collision responses, in order
   Stop stopped = Stop::exhausted;
+  // When the run stopped at its event count: the first failure it did not
+  // process, which ends the interval of the tree in force at the end.
+  std::optional<Time> next_failure;
   std::optional<mpq_class> limit;  // the time limit in force: the earlier of the scene's end and `until`
   Recovery recovery;
   std::size_t validations = 0;  // trees in force compared with a fresh build

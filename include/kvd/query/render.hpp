@@ -51,6 +51,9 @@ struct Camera {
   D2 to_image(const D2& q) const;
 };
 
+// The centroid of the scene's vertices at t, in double: where a picture looks.
+Camera::D3 centroid(const scene::Scene& s, const mpq_class& t);
+
 // The fragments of `tree` at t seen by the camera, back to front from
 // `view` (the camera's eye, exactly); fragments
 // with a vertex behind the eye are left out. Coordinates are exact until
