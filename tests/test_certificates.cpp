@@ -19,7 +19,7 @@
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/certificate.hpp"
 #include "kvd/scene/generators.hpp"
-#include "kvd/scene/priority.hpp"
+#include "kvd/detail/scene/priority.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
 

@@ -9,11 +9,11 @@
 #include "kernels.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/convert.hpp"
-#include "kvd/kinetic/collision.hpp"
+#include "kvd/detail/kinetic/collision.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/generators.hpp"
 #include "kvd/scene/scene_io.hpp"
-#include "kvd/scene/triangle_intersection.hpp"
+#include "kvd/detail/scene/triangle_intersection.hpp"
 
 using namespace kvd;
 

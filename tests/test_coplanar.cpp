@@ -6,7 +6,7 @@
 
 #include "kernels.hpp"
 #include "kvd/geometry/plucker.hpp"
-#include "kvd/kernel/determinant.hpp"
+#include "kvd/detail/kernel/determinant.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // every length around the block boundaries.
 #include <catch2/catch.hpp>
 
-#include "kvd/tree/digest.hpp"
+#include "kvd/detail/tree/digest.hpp"
 
 using kvd::tree::sha256_hex;
 using kvd::tree::sha256_hex_portable;

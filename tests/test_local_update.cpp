@@ -6,13 +6,13 @@
 
 #include "kernels.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
-#include "kvd/kinetic/local_update.hpp"
+#include "kvd/detail/kinetic/local_update.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/generators.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
-#include "kvd/tree/operations.hpp"
+#include "kvd/detail/tree/operations.hpp"
 
 using namespace kvd;
 using SP = symbolic::Symbolic_plane;

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "kvd/scene/exact_number.hpp"
-#include "kvd/scene/priority.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
+#include "kvd/detail/scene/priority.hpp"
 #include "kvd/scene/scene_io.hpp"
 
 namespace fs = std::filesystem;

@@ -1,5 +1,5 @@
-// Certificate upkeep after a batch (kinetic/reduced_upkeep.hpp,
-// kinetic/in_force.hpp, Event_queue::reshape): which nodes make their
+// Certificate upkeep after a batch (detail/kinetic/reduced_upkeep.hpp,
+// detail/kinetic/in_force.hpp, Event_queue::reshape): which nodes make their
 // certificates again, checked against keys written out here independently
 // of the upkeep's interned ones; the tree queue after reshapes against a
 // queue filled afresh and against the heap; a run keeping certificates
@@ -12,8 +12,8 @@
 
 #include "kernels.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
-#include "kvd/kinetic/event_queue.hpp"
-#include "kvd/kinetic/reduced_upkeep.hpp"
+#include "kvd/detail/kinetic/event_queue.hpp"
+#include "kvd/detail/kinetic/reduced_upkeep.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/generators.hpp"
 #include "kvd/scene/scene_io.hpp"

@@ -19,7 +19,7 @@
 
 #include "cgal_roots.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
-#include "kvd/kernel/zpoly.hpp"
+#include "kvd/detail/kernel/zpoly.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
 

@@ -1,7 +1,7 @@
 // The Plücker templates, compiled once for every ring of every kernel and
 // for the rings of the symbolic perturbation.
-#include "kvd/geometry/plucker_impl.hpp"
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/geometry/plucker_impl.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 
 #define KVD_INSTANTIATE_PLUCKER(R)                                                           \
   template kvd::Line<R> kvd::join(const Point4<R>&, const Point4<R>&);                       \

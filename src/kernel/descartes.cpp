@@ -1,4 +1,4 @@
-#include "kvd/kernel/descartes.hpp"
+#include "kvd/detail/kernel/descartes.hpp"
 
 namespace kvd {
 

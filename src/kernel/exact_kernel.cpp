@@ -1,6 +1,6 @@
 #include "kvd/kernel/exact_kernel.hpp"
 
-#include "kvd/kernel/descartes.hpp"
+#include "kvd/detail/kernel/descartes.hpp"
 
 namespace kvd {
 

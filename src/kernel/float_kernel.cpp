@@ -5,7 +5,7 @@
 #include <string>
 
 #include "kvd/kernel/convert.hpp"
-#include "kvd/kernel/numeric_roots.hpp"
+#include "kvd/detail/kernel/numeric_roots.hpp"
 
 namespace kvd {
 

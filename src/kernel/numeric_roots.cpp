@@ -1,4 +1,4 @@
-#include "kvd/kernel/numeric_roots.hpp"
+#include "kvd/detail/kernel/numeric_roots.hpp"
 
 #include <cmath>
 

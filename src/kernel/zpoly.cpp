@@ -1,4 +1,4 @@
-#include "kvd/kernel/zpoly.hpp"
+#include "kvd/detail/kernel/zpoly.hpp"
 
 #include <algorithm>
 #include <cassert>

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <map>
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/kinetic/positive.hpp"
+#include "kvd/detail/kinetic/positive.hpp"
 
 namespace kvd::kinetic {
 

@@ -1,9 +1,9 @@
-#include "kvd/kinetic/collision.hpp"
+#include "kvd/detail/kinetic/collision.hpp"
 
 #include <algorithm>
 
 #include "kvd/geometry/plucker.hpp"
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::kinetic {

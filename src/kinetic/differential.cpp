@@ -4,7 +4,7 @@
 #include <map>
 
 #include "kvd/kernel/convert.hpp"
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::kinetic {

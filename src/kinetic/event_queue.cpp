@@ -1,8 +1,8 @@
-#include "kvd/kinetic/event_queue.hpp"
+#include "kvd/detail/kinetic/event_queue.hpp"
 
 #include <boost/heap/pairing_heap.hpp>
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::kinetic {

@@ -1,6 +1,6 @@
 #include <type_traits>
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kvd.hpp"
 #include "kvd/query/visibility.hpp"
 #include "simulator.hpp"

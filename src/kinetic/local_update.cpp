@@ -1,11 +1,11 @@
-#include "kvd/kinetic/local_update.hpp"
+#include "kvd/detail/kinetic/local_update.hpp"
 
 #include <algorithm>
 #include <tuple>
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/tree/operations.hpp"
+#include "kvd/detail/tree/operations.hpp"
 
 namespace kvd::kinetic {
 

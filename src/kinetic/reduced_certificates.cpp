@@ -10,10 +10,10 @@
 #include <optional>
 
 #include "kvd/geometry/plucker.hpp"
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/kinetic/reduced_upkeep.hpp"
-#include "kvd/kinetic/positive.hpp"
+#include "kvd/detail/kinetic/reduced_upkeep.hpp"
+#include "kvd/detail/kinetic/positive.hpp"
 
 namespace kvd::kinetic {
 

@@ -1,8 +1,8 @@
-#include "kvd/kinetic/reduced_upkeep.hpp"
+#include "kvd/detail/kinetic/reduced_upkeep.hpp"
 
 #include <algorithm>
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/tree/compare.hpp"
 

@@ -1,6 +1,6 @@
 #include "kvd/kinetic/simulation.hpp"
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "simulator.hpp"
 
 namespace kvd::kinetic {

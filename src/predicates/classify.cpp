@@ -1,7 +1,7 @@
 #include "kvd/predicates/classify.hpp"
 
 #include "kvd/geometry/plucker.hpp"
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/symbolic/incidence.hpp"
 

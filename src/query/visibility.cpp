@@ -1,6 +1,6 @@
 #include "kvd/query/visibility.hpp"
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::query {

@@ -1,4 +1,4 @@
-#include "kvd/scene/exact_number.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 
 namespace kvd::scene {
 

@@ -1,7 +1,7 @@
 // Generators of degenerate scenes: axis-aligned boxes, and a rotor.
 #include "generator_support.hpp"
 #include "kvd/scene/generators.hpp"
-#include "kvd/scene/priority.hpp"
+#include "kvd/detail/scene/priority.hpp"
 
 namespace kvd::scene {
 

@@ -1,8 +1,8 @@
 // The thesis's uniform-scale and uniform-density data sets.
 #include "generator_support.hpp"
 #include "kvd/scene/generators.hpp"
-#include "kvd/scene/priority.hpp"
-#include "kvd/scene/triangle_intersection.hpp"
+#include "kvd/detail/scene/priority.hpp"
+#include "kvd/detail/scene/triangle_intersection.hpp"
 
 namespace kvd::scene {
 

@@ -1,4 +1,4 @@
-#include "kvd/scene/json_value.hpp"
+#include "kvd/detail/scene/json_value.hpp"
 
 #include <nlohmann/json.hpp>
 

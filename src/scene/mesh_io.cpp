@@ -4,7 +4,7 @@
 #include <map>
 #include <sstream>
 
-#include "kvd/scene/exact_number.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 #include "kvd/scene/scene_io.hpp"
 
 namespace kvd::scene {

@@ -1,4 +1,4 @@
-#include "kvd/scene/priority.hpp"
+#include "kvd/detail/scene/priority.hpp"
 
 #include <numeric>
 #include <utility>

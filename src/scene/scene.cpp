@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "kvd/scene/priority.hpp"
+#include "kvd/detail/scene/priority.hpp"
 
 namespace kvd::scene {
 

@@ -1,4 +1,4 @@
-#include "kvd/scene/scene_numbers.hpp"
+#include "kvd/detail/scene/scene_numbers.hpp"
 
 namespace kvd::scene {
 

@@ -7,11 +7,11 @@
 #include <set>
 #include <sstream>
 
-#include "kvd/scene/exact_number.hpp"
-#include "kvd/scene/json_value.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
+#include "kvd/detail/scene/json_value.hpp"
 #include "kvd/scene/scene_io.hpp"
-#include "kvd/scene/span_check.hpp"
-#include "kvd/scene/triangle_intersection.hpp"
+#include "kvd/detail/scene/span_check.hpp"
+#include "kvd/detail/scene/triangle_intersection.hpp"
 
 namespace kvd::scene {
 

@@ -2,7 +2,7 @@
 // constant as a plain number string), keys in the order of the format page.
 #include <nlohmann/json.hpp>
 
-#include "kvd/scene/exact_number.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 #include "kvd/scene/scene_io.hpp"
 
 namespace kvd::scene {

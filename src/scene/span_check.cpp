@@ -1,6 +1,6 @@
-#include "kvd/scene/span_check.hpp"
+#include "kvd/detail/scene/span_check.hpp"
 
-#include "kvd/kernel/descartes.hpp"
+#include "kvd/detail/kernel/descartes.hpp"
 
 namespace kvd::scene {
 

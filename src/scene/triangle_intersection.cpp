@@ -1,4 +1,4 @@
-#include "kvd/scene/triangle_intersection.hpp"
+#include "kvd/detail/scene/triangle_intersection.hpp"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 #include "kvd/symbolic/scene_geometry.hpp"
 
 #include "kvd/kernel/convert.hpp"
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 
 namespace kvd::symbolic {
 

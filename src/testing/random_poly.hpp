@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "kvd/kernel/zpoly.hpp"
+#include "kvd/detail/kernel/zpoly.hpp"
 
 namespace kvd::testing {
 

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "kvd/scene/exact_number.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 
 namespace kvd::cli {
 

@@ -20,7 +20,7 @@
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
-#include "kvd/scene/scene_numbers.hpp"
+#include "kvd/detail/scene/scene_numbers.hpp"
 #include "kvd/tree/build.hpp"
 
 namespace kvd::cli {

@@ -8,7 +8,7 @@
 #include "cli.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/scene/exact_number.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/bsp/autopartition.hpp"
 #include "kvd/tree/build.hpp"

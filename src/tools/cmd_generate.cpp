@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "cli.hpp"
-#include "kvd/scene/exact_number.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 #include "kvd/scene/generators.hpp"
 #include "kvd/scene/scene_io.hpp"
 

@@ -73,7 +73,7 @@ Touched nodes_touched(const kinetic::Simulation<Time>& sim) {
   return {median(n), n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size())};
 }
 
-// Certificates made again after each batch (kinetic/reduced_upkeep.hpp).
+// Certificates made again after each batch (detail/kinetic/reduced_upkeep.hpp).
 struct Recomputed {
   double median = 0;        // certificates per batch
   double nodes_median = 0;  // nodes that made them, per batch

@@ -1,8 +1,8 @@
 #include "kvd/tree/build.hpp"
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/tree/operations.hpp"
+#include "kvd/detail/tree/operations.hpp"
 
 namespace kvd::tree {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "kvd/tree/digest.hpp"
+#include "kvd/detail/tree/digest.hpp"
 
 namespace kvd::tree {
 

@@ -1,4 +1,4 @@
-#include "kvd/tree/digest.hpp"
+#include "kvd/detail/tree/digest.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "kvd/tree/fragment_split.hpp"
+#include "kvd/detail/tree/fragment_split.hpp"
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/symbolic/incidence.hpp"
 

@@ -1,9 +1,9 @@
-#include "kvd/tree/operations.hpp"
+#include "kvd/detail/tree/operations.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "kvd/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::tree {

@@ -16,7 +16,7 @@
 #include <string>
 #include <utility>
 
-#include "kvd/kernel/zpoly.hpp"
+#include "kvd/detail/kernel/zpoly.hpp"
 
 namespace kvd {
 

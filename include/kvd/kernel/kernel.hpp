@@ -16,7 +16,7 @@
 // To add a kernel: write a class with these members (a floating-point one can
 // derive from Float_kernel<FT>), add `static_assert(Kernel<...>)` below, and
 // add it to the instantiation lists in src/ (KVD_FOR_EACH_KERNEL in
-// kvd/kernel/instantiate.hpp) so that the templates above the kernel are
+// kvd/detail/kernel/instantiate.hpp) so that the templates above the kernel are
 // compiled for it once.
 #pragma once
 

@@ -13,7 +13,7 @@
 //    P-cuts crossing a T-node's fragment; and IV or II between each nearest
 //    P-wall and the intersection cuts farther on its side, which keeps the
 //    choice of wall right while a node keeps its certificates
-//    (kinetic/reduced_upkeep.hpp). Polynomials and their derivation:
+//    (detail/kinetic/reduced_upkeep.hpp). Polynomials and their derivation:
 //    proofs/certificates.md.
 #pragma once
 
@@ -43,7 +43,7 @@ struct Certificate {
   int node;                 // the tree node holding it (the kinetic priority queue's slot)
   std::vector<Poly> polys;  // non-constant, each positive just after the time it was made
   // The features it names: when it fails, the sites holding them move
-  // (kinetic/local_update.hpp).
+  // (detail/kinetic/local_update.hpp).
   std::vector<symbolic::Symbolic_vertex> vertices;
   std::vector<symbolic::Symbolic_plane> planes;
 };

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "kvd/kernel/exact_kernel.hpp"
-#include "kvd/kernel/zpoly.hpp"
+#include "kvd/detail/kernel/zpoly.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene.hpp"
 

@@ -13,7 +13,7 @@
 //
 // Collisions: an update that finds triangles meeting (a fragment crossing a
 // triangle's plane) is a collision. The response (X-collide, thesis 7.3.3,
-// kinetic/collision.hpp) reverses both objects' motions at a rational time
+// detail/kinetic/collision.hpp) reverses both objects' motions at a rational time
 // strictly between the last batch and the collision; the tree in force stays
 // valid there, and the certificates of the new motions replace the old ones.
 // Objects meeting again at that same instant before any batch (another pair
@@ -50,7 +50,7 @@
 
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kinetic/certificate.hpp"
-#include "kvd/kinetic/event_queue.hpp"
+#include "kvd/detail/kinetic/event_queue.hpp"
 #include "kvd/scene/scene.hpp"
 
 namespace kvd::kinetic {
@@ -141,11 +141,11 @@ enum class Validation { every, end, none };
 enum class Collisions { reverse, stop };
 
 // How a batch changes the tree: by the local update of thesis 7.3
-// (kinetic/local_update.hpp), or by the reference rebuild.
+// (detail/kinetic/local_update.hpp), or by the reference rebuild.
 enum class Update { local, rebuild };
 
 // Which nodes make their certificates again after a batch: those whose
-// inputs changed or that hold a failed certificate (kinetic/reduced_upkeep.hpp),
+// inputs changed or that hold a failed certificate (detail/kinetic/reduced_upkeep.hpp),
 // or every node (the reference). The full set is always made afresh.
 enum class Upkeep { local, all };
 

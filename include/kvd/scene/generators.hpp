@@ -1,7 +1,7 @@
 // Generators of the thesis's data sets (chapter 8.2) and of degenerate scenes.
 //
 // Every number is an exact rational and all randomness comes from SplitMix64
-// (kvd/scene/priority.hpp), so a seed fixes the output byte for byte on every
+// (kvd/detail/scene/priority.hpp), so a seed fixes the output byte for byte on every
 // platform. Each generated scene is disjoint at time 0, checked exactly.
 #pragma once
 

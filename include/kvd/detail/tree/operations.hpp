@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "kvd/scene/scene.hpp"
-#include "kvd/tree/fragment_split.hpp"
+#include "kvd/detail/tree/fragment_split.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::tree {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "kvd/kinetic/certificate.hpp"
-#include "kvd/kinetic/event_queue.hpp"
+#include "kvd/detail/kinetic/event_queue.hpp"
 
 namespace kvd::kinetic {
 

@@ -25,7 +25,7 @@
 
 #include "kvd/kinetic/certificate.hpp"
 #include "kvd/scene/scene.hpp"
-#include "kvd/tree/fragment_split.hpp"
+#include "kvd/detail/tree/fragment_split.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::kinetic {

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "kvd/geometry/plucker.hpp"
-#include "kvd/kernel/determinant.hpp"
+#include "kvd/detail/kernel/determinant.hpp"
 
 namespace kvd {
 
