@@ -141,7 +141,7 @@ Row w_row(SV::Kind v) {  // v derived (not an endpoint)
 // determinant of the two edges unless that is identically zero, when it is
 // the value of the intersection point against a triangle of e_j.
 Row reduced_row(const kinetic::Certificate<Exact_kernel::Poly>& cert, const predicates::Classifier<Exact_kernel>& c) {
-  switch (cert.type) {
+  switch (cert.key.type) {
     case Certificate_type::VV: return Row::endpoint_P;
     case Certificate_type::VE: return Row::endpoint_E;
     case Certificate_type::VT:
@@ -150,7 +150,7 @@ Row reduced_row(const kinetic::Certificate<Exact_kernel::Poly>& cert, const pred
     case Certificate_type::II: return Row::II;
     case Certificate_type::ET: {
       std::size_t e = 0, ej = 0;
-      REQUIRE(std::sscanf(cert.nodes.c_str(), "E(%zu) E(%zu)", &e, &ej) == 2);
+      REQUIRE(std::sscanf(kinetic::features(cert.key).c_str(), "E(%zu) E(%zu)", &e, &ej) == 2);
       const auto& s = c.motion().scene();
       const auto& m = c.motion();
       const auto det = coplanar(m.vertex(s.edges[e][0]), m.vertex(s.edges[e][1]), m.vertex(s.edges[ej][0]),
@@ -396,12 +396,12 @@ Measured measure(const Degree_case& dc, long& perturbed) {
     for (const auto& q : c.certificate(v, p)) CHECK((q == value || q == w));
   }
   for (const auto& cert : kinetic::full_certificates(c, t, ev, t0)) {
-    INFO(dc.name << ": full " << kinetic::to_string(cert.type) << " " << cert.nodes);
-    for (const auto& q : cert.polys) CHECK(q.degree() <= full_type_bound(cert.type, dc.m));
+    INFO(dc.name << ": full " << kinetic::to_string(cert.key.type) << " " << kinetic::features(cert.key));
+    for (const auto& q : cert.polys) CHECK(q.degree() <= full_type_bound(cert.key.type, dc.m));
   }
   for (const auto& cert : kinetic::reduced_certificates(c, t, t0)) {
     REQUIRE(cert.polys.size() == 1);
-    record(reduced_row(cert, c), cert.polys.front().degree(), "reduced " + cert.nodes);
+    record(reduced_row(cert, c), cert.polys.front().degree(), "reduced " + kinetic::features(cert.key));
   }
   return max_degree;
 }
@@ -433,9 +433,9 @@ TEST_CASE("reduced certificates: degrees, sign convention, every type made", "[c
       const Exact_time t0(mpq_class(0));
       const tree::Kvd_tree t = tree::build(c, t0);
       for (const auto& cert : kinetic::reduced_certificates(c, t, t0)) {
-        INFO(kinetic::to_string(cert.type) << " " << cert.nodes);
-        ++made[static_cast<std::size_t>(cert.type)];
-        CHECK(cert.type != Certificate_type::other);
+        INFO(kinetic::to_string(cert.key.type) << " " << kinetic::features(cert.key));
+        ++made[static_cast<std::size_t>(cert.key.type)];
+        CHECK(cert.key.type != Certificate_type::other);
         REQUIRE(cert.polys.size() == 1);
         const auto& q = cert.polys.front();
         CHECK(q.degree() >= 1);  // constants are never made

@@ -29,11 +29,13 @@ void add(kinetic::Simulation<Time>& sim, Time t, std::vector<Failure> failing, s
   sim.batches.push_back(std::move(b));
 }
 
-const Failure A{Certificate_type::VV, "SV(v1) P(2)"};
-const Failure B{Certificate_type::VE, "SV(v2) E(3)"};
-const Failure C{Certificate_type::IV, "SV(e1,E2) P(4)"};
-const Failure D{Certificate_type::VT, "SV(v5) T(6)"};
-const Failure X{Certificate_type::ET, "SV(e7,E8) T(9)"};
+using SV = symbolic::Symbolic_vertex;
+using SP = symbolic::Symbolic_plane;
+const Failure A{Certificate_type::VV, SV::endpoint(1), SP{SP::Kind::P, 2}};
+const Failure B{Certificate_type::VE, SV::endpoint(2), SP{SP::Kind::E, 3}};
+const Failure C{Certificate_type::IV, SV::intersection(1, 2), SP{SP::Kind::P, 4}};
+const Failure D{Certificate_type::VT, SV::endpoint(5), SP{SP::Kind::T, 6}};
+const Failure X{Certificate_type::ET, SV::intersection(7, 8), SP{SP::Kind::E, 8}};
 
 Exact_time exact(long n, long d = 1) { return Exact_time(mpq_class(n, d)); }
 

@@ -2,6 +2,7 @@
 // stepping a Kinetic_kvd gives the same run as kinetic::simulate, batch for
 // batch, and its queries between events agree with fresh builds.
 #include <catch2/catch.hpp>
+#include <map>
 #include <string>
 
 #include "kernels.hpp"
@@ -120,7 +121,21 @@ TEST_CASE("set_motion gives the tree and later events of the scene whose motion 
   const auto after = kvd::kinetic::simulate(k, split, rest);
   REQUIRE(after.valid());
   const kvd::predicates::Classifier<kvd::Exact_kernel> c(k, split);
-  CHECK(changed.structure_hash() == kvd::tree::structure_hash(kvd::tree::build(c, kvd::Exact_time(t0))));
+  const kvd::tree::Kvd_tree fresh = kvd::tree::build(c, kvd::Exact_time(t0));
+  CHECK(changed.structure_hash() == kvd::tree::structure_hash(fresh));
+  // Only the certificates naming the object's features were made again (and
+  // the others of the nodes holding them), yet the set in force is the
+  // fresh tree's: the rest kept their polynomials.
+  std::map<kvd::kinetic::Certificate_key, std::vector<std::vector<mpq_class>>> in_force, made;
+  for (const auto& cert : changed.certificates())
+    for (const auto& q : cert.polys) in_force[cert.key].push_back(q.coefficients());
+  for (const auto& cert : kvd::kinetic::reduced_certificates(c, fresh, kvd::Exact_time(t0)))
+    for (const auto& q : cert.polys) made[cert.key].push_back(q.coefficients());
+  CHECK(in_force == made);
+  const auto& change = changed.record().motion_changes.at(0);
+  CHECK(change.certificates == in_force.size());
+  CHECK(change.certificates_recomputed > 0);
+  CHECK(change.certificates_recomputed * 2 < change.certificates);
   std::size_t i = 0;
   while (const auto* b = changed.advance()) {
     REQUIRE(i < after.batches.size());

@@ -85,6 +85,14 @@ kinetic::Simulation<Exact_time> run(const scene::Scene& s, kinetic::Update u, st
   o.max_events = events;
   return kinetic::simulate(Exact_kernel(), s, o);
 }
+
+// A batch's failing certificates as traces print them.
+using Printed = std::vector<std::pair<kinetic::Certificate_type, std::string>>;
+Printed printed(const std::vector<kinetic::Failure>& failing) {
+  Printed out;
+  for (const auto& f : failing) out.emplace_back(f.type, kinetic::features(f));
+  return out;
+}
 }  // namespace
 
 TEMPLATE_TEST_CASE("dragging a site out and inserting it again gives the same tree", "[local]", KVD_ALL_KERNELS) {
@@ -343,7 +351,7 @@ TEST_CASE("an intersection event without an edge event (thesis Fig. 7.9): II fai
   const auto sim = run(s, kinetic::Update::local, 8);
   REQUIRE(sim.batches.size() >= 5);
   const auto& b = sim.batches[4];
-  CHECK(b.failing == std::vector<kinetic::Failure>{{kinetic::Certificate_type::II, "SV(e5,E8) P(SV(e3,E7))"}});
+  CHECK(printed(b.failing) == Printed{{kinetic::Certificate_type::II, "SV(e5,E8) P(SV(e3,E7))"}});
   CHECK(!b.changed);
   REQUIRE(b.time.is_rational());
   CHECK(b.time.rational() == test::q(326398995532, 81551288405));
@@ -367,7 +375,7 @@ TEST_CASE("edge events detected by II certificates (thesis Fig. 7.11): an edge p
   REQUIRE(sim.batches.size() >= 5);
   const auto& b = sim.batches[4];
   using T = kinetic::Certificate_type;
-  CHECK(b.failing == std::vector<kinetic::Failure>{{T::II, "SV(e11,E12) P(SV(e11,E3))"},
+  CHECK(printed(b.failing) == Printed{{T::II, "SV(e11,E12) P(SV(e11,E3))"},
                                                    {T::II, "SV(e11,E12) P(SV(e12,E3))"},
                                                    {T::II, "SV(e11,E3) P(SV(e11,E12))"},
                                                    {T::II, "SV(e11,E3) P(SV(e12,E3))"}});
@@ -429,7 +437,7 @@ TEST_CASE("dragging with merging and splitting effects (thesis Fig. 7.4): a vert
   const auto sim = run(s, kinetic::Update::local, 4);
   REQUIRE(sim.batches.size() >= 2);
   const auto& b = sim.batches[1];
-  CHECK(b.failing == std::vector<kinetic::Failure>{{kinetic::Certificate_type::VV, "SV(v5) P(1)"}});
+  CHECK(printed(b.failing) == Printed{{kinetic::Certificate_type::VV, "SV(v5) P(1)"}});
   REQUIRE(b.time.is_rational());
   CHECK(b.time.rational() == test::q(6516838, 2848615));
   const Figure f = figure(s, kinetic::rational_between(sim.batches[0].time, b.time), b.time.rational());

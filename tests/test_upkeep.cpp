@@ -63,9 +63,9 @@ std::vector<Node_view> nodes_of(const tree::Kvd_tree& t) {
 }
 
 template <class K>
-std::set<std::string> names(const std::vector<typename kinetic::Reduced_upkeep<K>::Held>& held) {
-  std::set<std::string> out;
-  for (const auto& h : held) out.insert(h.certificate->nodes);
+std::set<kinetic::Certificate_key> keys(const std::vector<typename kinetic::Reduced_upkeep<K>::Held>& held) {
+  std::set<kinetic::Certificate_key> out;
+  for (const auto& h : held) out.insert(h.certificate->key);
   return out;
 }
 }  // namespace
@@ -86,9 +86,9 @@ TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is ma
   CHECK(made.gone.empty());
   REQUIRE(made.changed.size() >= 20);
   for (const auto& h : made.changed) CHECK(h.made);
-  const std::set<std::string> all = names<TestType>(made.changed);
-  std::set<std::string> scratch;
-  for (const auto& cert : kinetic::reduced_certificates(c, t, now)) scratch.insert(cert.nodes);
+  const std::set<kinetic::Certificate_key> all = keys<TestType>(made.changed);
+  std::set<kinetic::Certificate_key> scratch;
+  for (const auto& cert : kinetic::reduced_certificates(c, t, now)) scratch.insert(cert.key);
   CHECK(all == scratch);
 
   const auto kept = upkeep.update(c, t, now, {}, again);
@@ -99,12 +99,12 @@ TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is ma
 
   // Every node whose own certificates include the failed one makes them
   // again, and no other node; what they make is what changes in force.
-  const std::string failed = *std::next(all.begin(), static_cast<std::ptrdiff_t>(all.size() / 2));
+  const kinetic::Certificate_key failed = *std::next(all.begin(), static_cast<std::ptrdiff_t>(all.size() / 2));
   kinetic::Reduced_maker<TestType> maker(c, t, now);
   std::size_t holders = 0, certificates = 0;
   for (const auto& v : nodes_of(t)) {
     const auto certs = maker.of_node(v.node, v.ancestors);
-    if (std::ranges::any_of(certs, [&](const auto& cert) { return cert.nodes == failed; })) {
+    if (std::ranges::any_of(certs, [&](const auto& cert) { return cert.key == failed; })) {
       ++holders;
       certificates += certs.size();
     }
@@ -114,7 +114,7 @@ TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is ma
   CHECK(refail.nodes == holders);
   CHECK(refail.certificates == certificates);
   CHECK(after.gone.empty());
-  const std::set<std::string> changed = names<TestType>(after.changed);
+  const std::set<kinetic::Certificate_key> changed = keys<TestType>(after.changed);
   CHECK(changed.contains(failed));
   CHECK(std::ranges::includes(all, changed));
   CHECK(changed.size() <= refail.certificates);

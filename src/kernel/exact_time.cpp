@@ -139,6 +139,12 @@ std::pair<mpq_class, mpq_class> Exact_time::canonical_interval() const {
   }
 }
 
+Exact_time Exact_time::canonical() const {
+  const auto [lo, hi] = canonical_interval();
+  if (rep_->rational) return Exact_time(lo);
+  return algebraic(rep_->p, lo, hi);
+}
+
 std::string Exact_time::to_string() const {
   const auto [lo, hi] = canonical_interval();  // [r, r] for a rational
   if (rep_->rational) return rep_->lo.get_str();

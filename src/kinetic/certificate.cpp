@@ -27,6 +27,74 @@ bool may_collide(Certificate_type t) {
   return t == Certificate_type::VT || t == Certificate_type::ET || t == Certificate_type::TT;
 }
 
+std::string features(const Certificate_key& k) {
+  const auto* plane = std::get_if<symbolic::Symbolic_plane>(&k.against);
+  if (k.type == Certificate_type::ET && plane && plane->kind == symbolic::Symbolic_plane::Kind::E)
+    return "E(" + std::to_string(k.vertex.ids[0]) + ") E(" + std::to_string(k.vertex.ids[1]) + ")";
+  if (plane) return symbolic::to_string(k.vertex) + " " + symbolic::to_string(*plane);
+  return symbolic::to_string(k.vertex) + " P(" + symbolic::to_string(std::get<symbolic::Symbolic_vertex>(k.against)) + ")";
+}
+
+bool printed_before(const Certificate_key& a, const Certificate_key& b) {
+  if (a.type != b.type) return a.type < b.type;
+  return features(a) < features(b);
+}
+
+namespace {
+
+bool names_object(const scene::Scene& s, const symbolic::Symbolic_vertex& v, std::size_t object) {
+  using VK = symbolic::Symbolic_vertex::Kind;
+  const auto vertex = [&](std::size_t i) { return s.vertex_object[i] == object; };
+  const auto edge = [&](std::size_t i) { return s.edge_object[i] == object; };
+  const auto triangle = [&](std::size_t i) { return s.triangle_object[i] == object; };
+  const auto& [a, b, c] = v.ids;
+  switch (v.kind) {
+    case VK::endpoint: return vertex(a);
+    case VK::intersection: return edge(a) || edge(b);
+    case VK::thread: return edge(a) || vertex(b);
+    case VK::internal_intersection: return edge(a) || edge(b) || triangle(c);
+    case VK::internal_thread: return vertex(a) || edge(b) || triangle(c);
+    case VK::axis: return triangle(a);
+    case VK::plumb: return vertex(a) || triangle(b);
+  }
+  return true;
+}
+
+bool names_object(const scene::Scene& s, const symbolic::Symbolic_plane& p, std::size_t object) {
+  using PK = symbolic::Symbolic_plane::Kind;
+  switch (p.kind) {
+    case PK::P: return s.vertex_object[p.id] == object;
+    case PK::E: return s.edge_object[p.id] == object;
+    case PK::T: return s.triangle_object[p.id] == object;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool names_object(const scene::Scene& s, const Certificate_key& k, std::size_t object) {
+  return names_object(s, k.vertex, object) ||
+         std::visit([&](const auto& against) { return names_object(s, against, object); }, k.against);
+}
+
+std::size_t Certificate_key_hash::operator()(const Certificate_key& k) const noexcept {
+  std::size_t h = static_cast<std::size_t>(k.type);
+  const auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
+  const auto vertex = [&](const symbolic::Symbolic_vertex& v) {
+    mix(static_cast<std::size_t>(v.kind));
+    for (std::size_t id : v.ids) mix(id);
+  };
+  vertex(k.vertex);
+  mix(k.against.index());
+  if (const auto* p = std::get_if<symbolic::Symbolic_plane>(&k.against)) {
+    mix(static_cast<std::size_t>(p->kind));
+    mix(p->id);
+  } else {
+    vertex(std::get<symbolic::Symbolic_vertex>(k.against));
+  }
+  return h;
+}
+
 namespace {
 
 // The thesis's name for a classification, where it has one.
@@ -55,7 +123,7 @@ std::vector<Certificate<typename K::Poly>> full_certificates(const predicates::C
   for (const auto& [v, p] : evaluated) {
     auto polys = positive(c, c.certificate(v, p), now);
     if (!polys.empty())
-      out.push_back({type_of(v, p), symbolic::to_string(v) + " " + symbolic::to_string(p), holder.at(p), std::move(polys), {v}, {p}});
+      out.push_back({{type_of(v, p), v, p}, holder.at(p), std::move(polys), {v}, {p}});
   }
   return out;
 }

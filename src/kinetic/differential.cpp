@@ -31,23 +31,27 @@ mpq_class distance(const Exact_time& e, const mpq_class& f) {
   }
 }
 
-// Two exact times: zero when equal, otherwise refined apart as above.
+// Two exact times: zero when equal, otherwise refined apart as above, from
+// their canonical intervals.
 mpq_class distance(const Exact_time& e, const Exact_time& f) {
   if (Exact_kernel().compare(e, f) == 0) return 0;
+  const Exact_time a = e.canonical(), b = f.canonical();
   for (;;) {
-    const bool below = e.upper() < f.lower();
-    const mpq_class gap = below ? mpq_class(f.lower() - e.upper()) : mpq_class(e.lower() - f.upper());
-    const mpq_class width = (e.upper() - e.lower()) + (f.upper() - f.lower());
+    const bool below = a.upper() < b.lower();
+    const mpq_class gap = below ? mpq_class(b.lower() - a.upper()) : mpq_class(a.lower() - b.upper());
+    const mpq_class width = (a.upper() - a.lower()) + (b.upper() - b.lower());
     if (gap > 0 && (width << distance_bits) <= gap) return gap + width / 2;
-    e.refine();
-    f.refine();
+    a.refine();
+    b.refine();
   }
 }
-mpq_class distance(const Exact_time& e, double f) { return distance(e, to_rational(f)); }
-mpq_class distance(const Exact_time& e, const Mpfr_number& f) { return distance(e, to_rational(f)); }
+// From the canonical interval, so that the result does not depend on how far
+// comparisons have refined e.
+mpq_class distance(const Exact_time& e, double f) { return distance(e.canonical(), to_rational(f)); }
+mpq_class distance(const Exact_time& e, const Mpfr_number& f) { return distance(e.canonical(), to_rational(f)); }
 
 // |e| to the same relative accuracy; e != 0.
-mpq_class magnitude(const Exact_time& e) { return distance(e, mpq_class(0)); }
+mpq_class magnitude(const Exact_time& e) { return distance(e.canonical(), mpq_class(0)); }
 
 std::string text(double t) { return Double_kernel().to_string(t); }
 std::string text(const Mpfr_number& t) { return t.to_string(17); }

@@ -7,11 +7,14 @@ namespace kvd::kinetic {
 
 namespace {
 
-// [lo, hi] around t holding no other root of p: t's own isolating interval
-// (for a factor of p) refined until Descartes' rule, exact at 1, counts one
-// root of p's square-free part inside and none at the ends.
-std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_time& t) {
+// [lo, hi] around t holding no other root of p: t's canonical isolating
+// interval (for a factor of p; Exact_time::canonical, so that the record
+// does not depend on how far comparisons refined t) refined until
+// Descartes' rule, exact at 1, counts one root of p's square-free part
+// inside and none at the ends.
+std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_time& time) {
   const zpoly::ZPoly s = zpoly::square_free(p);
+  const Exact_time t = time.canonical();
   for (;;) {
     if (t.is_rational()) return {t.rational(), t.rational()};
     if (zpoly::sign_at(s, t.lower()) != 0 && zpoly::sign_at(s, t.upper()) != 0 &&
@@ -21,43 +24,42 @@ std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_tim
   }
 }
 
-std::string key(const std::string& features, const zpoly::ZPoly& p, std::size_t motions) {
-  std::string k = features + " @" + std::to_string(motions);
-  for (const auto& c : p) k += " " + c.get_str();
-  return k;
-}
-
 }  // namespace
 
-std::size_t Event_order_recorder::id(Certificate_type type, const std::string& features, const zpoly::ZPoly& p) {
+std::size_t Event_order_recorder::id(const Certificate_key& key, const zpoly::ZPoly& p) {
   const std::size_t motions = order_.motion_changes.size();
-  const auto [it, fresh] = ids_.try_emplace(key(features, p, motions), order_.certificates.size());
-  if (fresh) order_.certificates.push_back({type, features, p, motions});
+  const auto [it, fresh] = ids_.try_emplace({key, motions, p}, order_.certificates.size());
+  if (fresh) order_.certificates.push_back({key, p, motions});
   return it->second;
 }
 
 void Event_order_recorder::in_force(const Exact_time&, const std::vector<Certificate<Exact_kernel::Poly>>& certs) {
   current_.clear();
   std::vector<std::size_t> active;
-  for (const auto& c : certs)
-    for (const auto& q : c.polys) {
+  // Certificates are numbered as they first appear, listed by their
+  // features' text: the certificate file's order.
+  std::vector<const Certificate<Exact_kernel::Poly>*> listed;
+  for (const auto& c : certs) listed.push_back(&c);
+  std::ranges::stable_sort(listed, {}, [](const auto* c) { return features(c->key); });
+  for (const auto* c : listed)
+    for (const auto& q : c->polys) {
       // to_zpoly scales by a positive rational: still positive where in force.
-      const std::size_t i = id(c.type, c.nodes, zpoly::to_zpoly(q));
-      current_[c.nodes].push_back(i);
+      const std::size_t i = id(c->key, zpoly::to_zpoly(q));
+      current_[c->key].push_back(i);
       active.push_back(i);
     }
   order_.intervals.push_back(std::move(active));
 }
 
 Event_order::Root Event_order_recorder::root(const Failure& f, const Exact_time& t) const {
-  const auto it = current_.find(f.nodes);
-  if (it == current_.end()) throw std::logic_error("event of a certificate not in force: " + f.nodes);
+  const auto it = current_.find(f);
+  if (it == current_.end()) throw std::logic_error("event of a certificate not in force: " + features(f));
   // The certificate's polynomial that vanishes at t.
   const auto vanishes = [&](std::size_t i) {
     return k_.sign_at(zpoly::to_poly(order_.certificates[i].polynomial), t) == 0;
   };
   const auto which = std::find_if(it->second.begin(), it->second.end(), vanishes);
-  if (which == it->second.end()) throw std::logic_error("no polynomial of " + f.nodes + " vanishes at its event");
+  if (which == it->second.end()) throw std::logic_error("no polynomial of " + features(f) + " vanishes at its event");
   const zpoly::ZPoly& p = order_.certificates[*which].polynomial;
   const auto [lo, hi] = isolating(p, t);
   int multiplicity = 0;

@@ -103,4 +103,23 @@ const kinetic::Simulation<typename K::Time>& Kinetic_kvd<K>::record() const {
 #define KVD_INSTANTIATE_KINETIC(K) template class Kinetic_kvd<K>;
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_KINETIC)
 
+namespace kinetic {
+
+// The stepping object run to the end: kvd simulate, diff, certify and bench
+// are its clients through this function.
+template <class K>
+Simulation<typename K::Time> simulate(const K& k, const scene::Scene& s, const Options& options,
+                                      Observer<K>* observer) {
+  Kinetic_kvd<K> run(k, s, options, observer);
+  while (run.advance()) {
+  }
+  return run.record();
+}
+
+#define KVD_INSTANTIATE_SIMULATE(K) \
+  template Simulation<K::Time> simulate<K>(const K&, const scene::Scene&, const Options&, Observer<K>*);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SIMULATE)
+
+}  // namespace kinetic
+
 }  // namespace kvd

@@ -140,10 +140,10 @@ private:
     const auto& e = s_.edges[s.ids[0]];
     const auto& ej = s_.edges[s.ids[1]];
     const auto& m = c_.motion();
-    const std::string nodes = "E(" + std::to_string(s.ids[0]) + ") E(" + std::to_string(s.ids[1]) + ")";
     P d = coplanar(m.vertex(e[0]), m.vertex(e[1]), m.vertex(ej[0]), m.vertex(ej[1]));
     if (d.is_zero()) d = c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()});
-    add({Certificate_type::ET, nodes, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, SP{SP::Kind::E, s.ids[1]}}});
+    const SP against{SP::Kind::E, s.ids[1]};
+    add({{Certificate_type::ET, s, against}, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, against}});
   }
 
   // The implicit P-cut through an intersection point: x ∨ z ∨ s, as SP(V).
@@ -247,17 +247,17 @@ private:
 
   void emit(const Spec& s) {
     if (s.plane) {
-      add({s.type, symbolic::to_string(s.vertex) + " " + symbolic::to_string(*s.plane), at_,
+      add({{s.type, s.vertex, *s.plane}, at_,
            positive(c_, std::vector<P>{c_.value(s.vertex, *s.plane)}, now_), {s.vertex}, {*s.plane}});
       return;
     }
     // II (thesis 6.3.7): two intersection points at the same height.
-    add({s.type, symbolic::to_string(s.vertex) + " P(" + symbolic::to_string(s.other) + ")", at_,
+    add({{s.type, s.vertex, s.other}, at_,
          positive(c_, std::vector<P>{dot(p_cut(s.other), c_.position(s.vertex))}, now_), {s.vertex, s.other}, {}});
   }
 
   void add(Certificate<P> cert) {
-    if (!cert.polys.empty()) made_.try_emplace(cert.nodes, std::move(cert));
+    if (!cert.polys.empty()) made_.try_emplace(cert.key, std::move(cert));
   }
 
   const predicates::Classifier<K>& c_;
@@ -268,7 +268,7 @@ private:
   const std::vector<int>* path_ = nullptr;  // the ancestors of the node visited, root first
   int at_ = -1;                             // the node visited
   std::map<SV, Plane4<P>> p_cuts_;
-  std::map<std::string, Certificate<P>> made_;
+  std::map<Certificate_key, Certificate<P>> made_;
 };
 
 template <class K>

@@ -11,10 +11,10 @@ namespace kvd::kinetic {
 template <class K>
 typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
                                                               const tree::Kvd_tree& t, const typename K::Time& now,
-                                                              const std::set<std::string>& failed, Work& work) {
+                                                              const std::set<Certificate_key>& failed, Work& work) {
   const auto holds_failed = [&](const std::vector<Certificate<Poly>>& certs) {
     return !failed.empty() &&
-           std::ranges::any_of(certs, [&](const auto& cert) { return failed.contains(cert.nodes); });
+           std::ranges::any_of(certs, [&](const auto& cert) { return failed.contains(cert.key); });
   };
   records_.resize(std::max(records_.size(), t.nodes.size()));
   // 1. Pre-order: the nodes whose slot holds their key keep their record;
@@ -56,17 +56,17 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     for (int child : {n.right, n.left})  // left first off the stack
       if (child >= 0) stack.push_back({child, children, v.depth + 1});
   }
-  // The holders of the names that records not kept in place lose (with
-  // each touched name's holder before).
-  std::map<std::string, int> before;
-  const auto touch = [&](const std::string& name) {
-    auto& h = holders_[name];
-    before.try_emplace(name, h.empty() ? -1 : *h.begin());
+  // The holders of the keys that records not kept in place lose (with
+  // each touched key's holder before).
+  std::map<Certificate_key, int> before;
+  const auto touch = [&](const Certificate_key& key) {
+    auto& h = holders_[key];
+    before.try_emplace(key, h.empty() ? -1 : *h.begin());
     return &h;
   };
   for (std::size_t slot = 0; slot < records_.size(); ++slot)
     if (!in_place[slot] && records_[slot].used)
-      for (const auto& cert : records_[slot].certificates) touch(cert.nodes)->erase(static_cast<int>(slot));
+      for (const auto& cert : records_[slot].certificates) touch(cert.key)->erase(static_cast<int>(slot));
   // 2. A pending key held before by another slot that is not kept in place
   // (the rebuild renumbers every node) keeps that slot's certificates;
   // the other pending nodes make theirs. Records are written afterwards:
@@ -106,7 +106,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     r.certificates = std::move(certs[p]);
     for (auto& cert : r.certificates) {
       cert.node = pending[p].node;
-      touch(cert.nodes)->insert(pending[p].node);
+      touch(cert.key)->insert(pending[p].node);
     }
     where_.try_emplace(pending[p].key, pending[p].node);  // a key met twice stays with its first node
     r.key = std::move(pending[p].key);
@@ -115,12 +115,12 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   }
   records_.resize(t.nodes.size());
   remake_ = false;
-  // 4. What changed in force: a name whose holder is new or rewritten.
+  // 4. What changed in force: a key whose holder is new or rewritten.
   Changes out;
-  for (const auto& [name, old] : before) {
-    const auto it = holders_.find(name);
+  for (const auto& [key, old] : before) {
+    const auto it = holders_.find(key);
     if (it->second.empty()) {
-      if (old >= 0) out.gone.push_back(name);
+      if (old >= 0) out.gone.push_back(key);
       holders_.erase(it);
       continue;
     }
@@ -128,7 +128,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     const auto slot = static_cast<std::size_t>(holder);
     if (holder == old && !rewritten[slot]) continue;
     for (const auto& cert : records_[slot].certificates)
-      if (cert.nodes == name) out.changed.push_back({&cert, fresh[slot]});
+      if (cert.key == key) out.changed.push_back({&cert, fresh[slot]});
   }
   return out;
 }

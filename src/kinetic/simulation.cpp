@@ -1,8 +1,5 @@
 #include "kvd/kinetic/simulation.hpp"
 
-#include "kvd/detail/kernel/instantiate.hpp"
-#include "simulator.hpp"
-
 namespace kvd::kinetic {
 
 mpq_class rational_between(const Exact_time& a, const Exact_time& b) {
@@ -14,15 +11,5 @@ mpq_class rational_between(const Exact_time& a, const Exact_time& b) {
     b.refine();
   }
 }
-
-template <class K>
-Simulation<typename K::Time> simulate(const K& k, const scene::Scene& s, const Options& options,
-                                      Observer<K>* observer) {
-  return detail::Simulator<K>(k, s, options, observer).run();
-}
-
-#define KVD_INSTANTIATE_SIMULATE(K) \
-  template Simulation<K::Time> simulate<K>(const K&, const scene::Scene&, const Options&, Observer<K>*);
-KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SIMULATE)
 
 }  // namespace kvd::kinetic

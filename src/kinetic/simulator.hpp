@@ -1,6 +1,6 @@
 // The event loop of the kinetic KVD (kinetic/simulation.hpp), as a class
-// that kinetic::simulate runs to the end and kvd::Kinetic_kvd steps
-// (include/kvd/kvd.hpp). Internal: not installed.
+// that kvd::Kinetic_kvd steps (include/kvd/kvd.hpp; kinetic::simulate runs
+// it to the end). Internal: not installed.
 #pragma once
 
 #include <algorithm>
@@ -62,14 +62,7 @@ public:
     }
     make_certificates();
     sim_.construction_seconds = seconds_since(start);
-    in_force_.for_each([&](const auto& cert) { ++sim_.initial_certificates[static_cast<std::size_t>(cert.type)]; });
-  }
-
-  Simulation<Time> run() {
-    start();
-    while (step()) {
-    }
-    return std::move(finish());
+    in_force_.for_each([&](const auto& cert) { ++sim_.initial_certificates[static_cast<std::size_t>(cert.key.type)]; });
   }
 
   // One step of the run: a batch processed, a motion change made, or (in a
@@ -100,8 +93,10 @@ public:
   // instant `at` on, now <= at < the next event (and within the limit). The
   // tree in force is valid at `at`; it is rebuilt just after `at` under the
   // new motions (it changes only where the object jumps or a classification
-  // the perturbation decided no longer vanishes), and every certificate is
-  // made again from the new motions. Recorded as a motion change; throws
+  // the perturbation decided no longer vanishes). The certificates naming
+  // the object's features are made again, with those of the nodes the
+  // rebuild changed (seed 003, Lemma 3.1); the others keep their failure
+  // times. Recorded as a motion change; throws
   // std::invalid_argument on a bad object, motion or instant, and
   // tree::Build_error (leaving the run as it was) when triangles would meet
   // just after `at`.
@@ -128,7 +123,8 @@ public:
     now_ = t;
     sim_.motion_changes.push_back({at, t, {object}, {motion}, sim_.batches.size(), "flight-plan change", *changed});
     if (o_.validate == Validation::end) before_last_.reset();  // the tree in force now has new motions
-    make_certificates();
+    sim_.motion_changes.back().certificates_recomputed = remake_certificates_of(object);
+    sim_.motion_changes.back().certificates = in_force_.size();
   }
 
   // The run so far, as it stands.
@@ -184,9 +180,8 @@ private:
     Batch<Time> batch;
     batch.certificates = in_force_.size();
     std::vector<std::size_t> first = queue_->first();
-    const auto name = [&](std::size_t id) { return Failure{in_force_[id].type, in_force_[id].nodes}; };
-    std::ranges::sort(first, {}, name);
-    for (std::size_t id : first) batch.failing.push_back(name(id));
+    std::ranges::sort(first, printed_before, [&](std::size_t id) { return in_force_[id].key; });
+    for (std::size_t id : first) batch.failing.push_back(in_force_[id].key);
     // The time as the first failing certificate gives it: its polynomial,
     // not whichever the queue met first (the text of a trace).
     batch.time = *in_force_.fails(first.front());
@@ -327,16 +322,33 @@ private:
   // After a batch: the reduced set keeps the certificates of the nodes the
   // batch left alone (Reduced_upkeep); the queue changes where they changed.
   void keep_certificates(Batch<Time>& batch) {
-    std::set<std::string> failed;
-    for (const Failure& f : batch.failing) failed.insert(f.nodes);
-    if (o_.upkeep == Upkeep::all) upkeep_.remake_all();
-    queue_->reshape(current_);
-    const auto work = put_in_force(failed);
+    const auto work = keep_certificates(std::set<Certificate_key>(batch.failing.begin(), batch.failing.end()));
     batch.nodes_recomputed = work.nodes;
     batch.certificates_recomputed = work.certificates;
   }
+  typename Reduced_upkeep<K>::Work keep_certificates(const std::set<Certificate_key>& failed) {
+    if (o_.upkeep == Upkeep::all) upkeep_.remake_all();
+    queue_->reshape(current_);
+    return put_in_force(failed);
+  }
 
-  typename Reduced_upkeep<K>::Work put_in_force(const std::set<std::string>& failed) {
+  // After a flight-plan change of `object`: the nodes holding a certificate
+  // that names its features make theirs again, as if it had failed. The
+  // full set is what the rebuild evaluated: made again whole.
+  // How many were made.
+  std::size_t remake_certificates_of(std::size_t object) {
+    if (full()) {
+      make_certificates();
+      return in_force_.size();
+    }
+    std::set<Certificate_key> named;
+    in_force_.for_each([&](const auto& cert) {
+      if (names_object(scene_, cert.key, object)) named.insert(cert.key);
+    });
+    return keep_certificates(named).certificates;
+  }
+
+  typename Reduced_upkeep<K>::Work put_in_force(const std::set<Certificate_key>& failed) {
     const auto fails = [&](const auto& cert) {
       std::optional<Time> first;
       for (const auto& q : cert.polys) {
@@ -462,12 +474,12 @@ private:
     std::string features;
     for (std::size_t id : queue_->first()) {
       const auto& cert = in_force_[id];
-      if (!may_collide(cert.type)) continue;
+      if (!may_collide(cert.key.type)) continue;
       const Touch th = touch(scene_, cert.vertices, cert.planes);
       const auto objects = contact_objects(scene_, th);
       if (objects.size() < 2 || !in_triangle(*c_, k_, th, t)) continue;
       met_.insert(met_.end(), objects.begin(), objects.end());
-      features += (features.empty() ? "" : ", ") + std::string(to_string(cert.type)) + " " + cert.nodes;
+      features += (features.empty() ? "" : ", ") + std::string(to_string(cert.key.type)) + " " + kinetic::features(cert.key);
     }
     std::sort(met_.begin(), met_.end());
     met_.erase(std::unique(met_.begin(), met_.end()), met_.end());
@@ -571,7 +583,7 @@ private:
   static std::string colliding(const Batch<Time>& b) {
     std::string out;
     for (const Failure& f : b.failing)
-      if (may_collide(f.type)) out += std::string(out.empty() ? "; failing: " : ", ") + to_string(f.type) + " " + f.nodes;
+      if (may_collide(f.type)) out += std::string(out.empty() ? "; failing: " : ", ") + to_string(f.type) + " " + kinetic::features(f);
     return out;
   }
 

@@ -205,7 +205,7 @@ private:
     py::dict d;
     put_time(d, k_, b.time, "time");
     py::list failing;
-    for (const auto& f : b.failing) failing.append(py::make_tuple(kvd::kinetic::to_string(f.type), f.nodes));
+    for (const auto& f : b.failing) failing.append(py::make_tuple(kvd::kinetic::to_string(f.type), kvd::kinetic::features(f)));
     d["failing"] = failing;
     d["changed"] = b.changed;
     d["structure_hash"] = b.structure;

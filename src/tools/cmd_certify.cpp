@@ -52,7 +52,7 @@ std::string document(const scene::Scene& s, const kinetic::Event_order& order, c
   using Order = kinetic::Event_order;
   auto kind_features = [&](std::size_t id) {
     const auto& c = order.certificates[id];
-    return "\"kind\": " + json_string(kinetic::to_string(c.type)) + ", \"features\": " + json_string(c.features) +
+    return "\"kind\": " + json_string(kinetic::to_string(c.key.type)) + ", \"features\": " + json_string(kinetic::features(c.key)) +
            ", \"polynomial\": " + integers(c.polynomial);
   };
   auto root = [&](const Order::Root& r) {

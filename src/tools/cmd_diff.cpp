@@ -51,7 +51,7 @@ void print_json(const std::string& scene, const std::string& kernel, const kinet
     const auto& m = d.events[i];
     const Exact_time& t = exact.batches[m.exact_batch].time;
     std::cout << (i ? ",\n  " : "\n  ") << "{\"event\": " << i << ", \"certificate\": "
-              << json_string(kinetic::to_string(m.failure.type)) << ", \"nodes\": " << json_string(m.failure.nodes)
+              << json_string(kinetic::to_string(m.failure.type)) << ", \"nodes\": " << json_string(kinetic::features(m.failure))
               << ", \"exact_time\": " << json_string(t.to_string()) << ", \"exact_approx\": " << json_string(approx(t.to_double()))
               << ", \"inexact_event\": " << (m.inexact_event ? std::to_string(*m.inexact_event) : "null")
               << ", \"inexact_time\": " << (m.inexact_event ? json_string(d.inexact[*m.inexact_event].time) : "null")
@@ -66,7 +66,7 @@ void print_json(const std::string& scene, const std::string& kernel, const kinet
     if (d.inexact[j].exact_event) continue;
     std::cout << (first ? "\n  " : ",\n  ") << "{\"inexact_event\": " << j << ", \"certificate\": "
               << json_string(kinetic::to_string(d.inexact[j].failure.type))
-              << ", \"nodes\": " << json_string(d.inexact[j].failure.nodes)
+              << ", \"nodes\": " << json_string(kinetic::features(d.inexact[j].failure))
               << ", \"inexact_time\": " << json_string(d.inexact[j].time) << "}";
     first = false;
   }
@@ -83,7 +83,7 @@ void print_json(const std::string& scene, const std::string& kernel, const kinet
 void print_text(const char* kernel, const kinetic::Differential& d, const kinetic::Simulation<Exact_time>& exact) {
   for (std::size_t i = 0; i < d.events.size(); ++i) {
     const auto& m = d.events[i];
-    std::cout << "event " << i << " " << kinetic::to_string(m.failure.type) << " " << m.failure.nodes << " at "
+    std::cout << "event " << i << " " << kinetic::to_string(m.failure.type) << " " << kinetic::features(m.failure) << " at "
               << approx(exact.batches[m.exact_batch].time.to_double()) << ": ";
     if (!m.inexact_event) {
       std::cout << "missed\n";
@@ -96,7 +96,7 @@ void print_text(const char* kernel, const kinetic::Differential& d, const kineti
   for (std::size_t j = 0; j < d.inexact.size(); ++j)
     if (!d.inexact[j].exact_event)
       std::cout << kernel << " event " << j << " " << kinetic::to_string(d.inexact[j].failure.type) << " "
-                << d.inexact[j].failure.nodes << " at " << d.inexact[j].time << ": spurious\n";
+                << kinetic::features(d.inexact[j].failure) << " at " << d.inexact[j].time << ": spurious\n";
   std::cout << "events compared:      " << d.events.size() << "\n"
             << "first divergence:     "
             << (d.first_divergence_event ? "event " + std::to_string(*d.first_divergence_event) : std::string("none"))

@@ -126,7 +126,7 @@ std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>&
                                  "], \"approx\": " + json_string(approx(k.to_double(e.time)));
         for (const auto& f : e.failing)
           out += head + ", \"certificate\": " + json_string(kinetic::to_string(f.type)) +
-                 ", \"nodes\": " + json_string(f.nodes) + "}\n";
+                 ", \"nodes\": " + json_string(kinetic::features(f)) + "}\n";
       });
   return out;
 }

@@ -14,20 +14,21 @@ public:
   explicit Failing_recorder(std::vector<std::vector<Failing_certificate>>& out) : out_(out) {}
   void in_force(const Exact_time&, const std::vector<kinetic::Certificate<Exact_kernel::Poly>>& certs) override {
     current_.clear();
-    for (const auto& c : certs) current_.try_emplace(c.nodes, Failing_certificate{c.type, c.nodes, c.vertices, c.planes});
+    for (const auto& c : certs)
+      current_.try_emplace(c.key, Failing_certificate{c.key.type, kinetic::features(c.key), c.vertices, c.planes});
   }
   void batch(const kinetic::Batch<Exact_time>& b, bool) override {
     std::vector<Failing_certificate> failing;
     for (const auto& f : b.failing) {
-      const auto it = current_.find(f.nodes);
-      failing.push_back(it != current_.end() ? it->second : Failing_certificate{f.type, f.nodes, {}, {}});
+      const auto it = current_.find(f);
+      failing.push_back(it != current_.end() ? it->second : Failing_certificate{f.type, kinetic::features(f), {}, {}});
     }
     out_.push_back(std::move(failing));
   }
 
 private:
   std::vector<std::vector<Failing_certificate>>& out_;
-  std::map<std::string, Failing_certificate> current_;
+  std::map<kinetic::Certificate_key, Failing_certificate> current_;
 };
 
 }  // namespace

@@ -49,6 +49,9 @@ public:
   // Descartes' rule counts exactly one root of p in it and p vanishes at
   // neither end. [r, r] for a rational r. (Refines the shared interval.)
   std::pair<mpq_class, mpq_class> canonical_interval() const;
+  // A copy sharing nothing, its interval canonical_interval(): what is
+  // computed from it by refining depends on the value only.
+  Exact_time canonical() const;
   // "7/3" for a rational, "root of [c0, c1, ...] in (lo, hi)" otherwise,
   // with the canonical interval: the same text however the value was
   // compared before.

@@ -18,7 +18,9 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "kvd/predicates/classify.hpp"
@@ -36,10 +38,35 @@ const char* to_string(Certificate_type t);
 // when the features touch (thesis 6.2.3).
 bool may_collide(Certificate_type t);
 
+// A certificate's identity: its type and the features it names, a vertex
+// against a plane (VV, VE, VT, IV, TT, other), an intersection point
+// against the P-cut through another (II, thesis 6.3.7), or two edges whose
+// lines meet (the reduced set's ET: the point where the first meets the
+// second's E-plane, against that plane; the full set's ET is a point
+// against a triangle's plane). Ordered and hashable; text only for printing.
+struct Certificate_key {
+  Certificate_type type;
+  symbolic::Symbolic_vertex vertex;
+  std::variant<symbolic::Symbolic_plane, symbolic::Symbolic_vertex> against;
+  auto operator<=>(const Certificate_key&) const = default;
+};
+// The features in words, as traces print them: "SV(v3) P(7)",
+// "SV-int(e1,E4) P(SV-int(e2,E5))", "E(1) E(4)".
+std::string features(const Certificate_key& k);
+// Printing order: by type, then by the features' text (traces and
+// certificate files list certificates in this order).
+bool printed_before(const Certificate_key& a, const Certificate_key& b);
+// Whether the certificate's polynomials depend on the motion of `object`:
+// whether a feature it names (a vertex, edge or triangle of a symbolic
+// vertex or plane) belongs to it.
+bool names_object(const scene::Scene& s, const Certificate_key& k, std::size_t object);
+struct Certificate_key_hash {
+  std::size_t operator()(const Certificate_key& k) const noexcept;
+};
+
 template <class Poly>
 struct Certificate {
-  Certificate_type type;
-  std::string nodes;        // the symbolic features, e.g. "SV(v3) P(7)"; its identity
+  Certificate_key key;
   int node;                 // the tree node holding it (the kinetic priority queue's slot)
   std::vector<Poly> polys;  // non-constant, each positive just after the time it was made
   // The features it names: when it fails, the sites holding them move

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -23,8 +24,7 @@ namespace kvd::kinetic {
 
 struct Event_order {
   struct Entry {
-    Certificate_type type;
-    std::string features;
+    Certificate_key key;
     zpoly::ZPoly polynomial;  // primitive, positive where the certificate is in force
     std::size_t motions;      // the motions it is made of: 0 the scene's, k those after motion change k - 1
   };
@@ -48,7 +48,7 @@ struct Event_order {
     std::vector<scene::Motion> motions;
     std::string contact;  // which features met, in words
   };
-  std::vector<Entry> certificates;  // one per distinct (type, features, polynomial, motions)
+  std::vector<Entry> certificates;  // one per distinct (key, polynomial, motions)
   std::vector<Event> events;
   // The ids in force from the start, after each batch and after each motion change.
   std::vector<std::vector<std::size_t>> intervals;
@@ -67,14 +67,14 @@ public:
   Event_order take() { return std::move(order_); }
 
 private:
-  std::size_t id(Certificate_type type, const std::string& features, const zpoly::ZPoly& p);
+  std::size_t id(const Certificate_key& key, const zpoly::ZPoly& p);
   // The failure of the certificate in force named `f` at t.
   Event_order::Root root(const Failure& f, const Exact_time& t) const;
 
   Exact_kernel k_;
   Event_order order_;
-  std::map<std::string, std::size_t> ids_;  // by features, coefficients and motions
-  std::map<std::string, std::vector<std::size_t>> current_;  // the ids in force, by features
+  std::map<std::tuple<Certificate_key, std::size_t, zpoly::ZPoly>, std::size_t> ids_;  // by key, motions and polynomial
+  std::map<Certificate_key, std::vector<std::size_t>> current_;  // the ids in force, by key
 };
 
 }  // namespace kvd::kinetic

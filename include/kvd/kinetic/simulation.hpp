@@ -55,11 +55,8 @@
 
 namespace kvd::kinetic {
 
-struct Failure {
-  Certificate_type type;
-  std::string nodes;  // the certificate's symbolic features
-  auto operator<=>(const Failure&) const = default;
-};
+// A failing certificate, by its identity.
+using Failure = Certificate_key;
 
 template <class Time>
 struct Batch {
@@ -90,6 +87,10 @@ struct Motion_change {
   std::size_t batches_before = 0;      // the batches processed before it
   std::string contact;                 // which features met, in words
   bool tree_changed = false;           // whether the tree just after `time` differs from the tree before
+  // A flight-plan change: the certificates made again (those naming the
+  // object's features, and the others of the nodes holding them), and
+  // those in force after it.
+  std::size_t certificates_recomputed = 0, certificates = 0;
 };
 
 using Type_counts = std::array<std::size_t, certificate_types>;

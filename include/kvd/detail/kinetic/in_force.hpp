@@ -10,8 +10,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <string>
-#include <string_view>
 #include <vector>
 
 #include "kvd/kinetic/certificate.hpp"
@@ -26,28 +24,28 @@ public:
   using Time = typename K::Time;
   struct Offer {
     const Certificate<Poly>* certificate;
-    bool made;  // made at this update; otherwise the same as the one in force under its name
+    bool made;  // made at this update; otherwise the same as the one in force under its key
   };
 
-  // Puts exactly `offers` (distinct names) in force; `fails(c)` is the
+  // Puts exactly `offers` (distinct keys) in force; `fails(c)` is the
   // failure time of a certificate new in force or with new polynomials.
   template <class Fails>
   void replace(const std::vector<Offer>& offers, Event_queue<K>& queue, Fails fails) {
-    std::set<std::string_view> offered;
-    for (const Offer& o : offers) offered.insert(o.certificate->nodes);
-    std::vector<std::string> gone;
-    for (const auto& [name, id] : ids_)
-      if (!offered.contains(name)) gone.push_back(name);
+    std::set<Certificate_key> offered;
+    for (const Offer& o : offers) offered.insert(o.certificate->key);
+    std::vector<Certificate_key> gone;
+    for (const auto& [key, id] : ids_)
+      if (!offered.contains(key)) gone.push_back(key);
     apply(gone, offers, queue, fails);
   }
 
-  // Takes the names `gone` out of force and puts `changed` (distinct names)
+  // Takes the keys `gone` out of force and puts `changed` (distinct keys)
   // in force, keeping everything else.
   template <class Fails>
-  void apply(const std::vector<std::string>& gone, const std::vector<Offer>& changed, Event_queue<K>& queue,
+  void apply(const std::vector<Certificate_key>& gone, const std::vector<Offer>& changed, Event_queue<K>& queue,
              Fails fails) {
-    for (const std::string& name : gone) {
-      const auto it = ids_.find(name);
+    for (const Certificate_key& key : gone) {
+      const auto it = ids_.find(key);
       const std::size_t id = it->second;
       queue.set(id, entries_[id].certificate->node, std::nullopt);
       entries_[id] = Entry{};
@@ -56,7 +54,7 @@ public:
     }
     for (const Offer& o : changed) {
       const Certificate<Poly>& c = *o.certificate;
-      auto [it, fresh] = ids_.try_emplace(c.nodes);
+      auto [it, fresh] = ids_.try_emplace(c.key);
       if (fresh) it->second = allocate();
       const std::size_t id = it->second;
       Entry& e = entries_[id];
@@ -83,10 +81,10 @@ public:
   // The failure time the queue holds for it.
   const std::optional<Time>& fails(std::size_t id) const { return entries_[id].fails; }
   std::size_t size() const { return ids_.size(); }
-  // By name.
+  // By key.
   template <class F>
   void for_each(F f) const {
-    for (const auto& [name, id] : ids_) f(*entries_[id].certificate);
+    for (const auto& [key, id] : ids_) f(*entries_[id].certificate);
   }
 
 private:
@@ -110,7 +108,7 @@ private:
                               [](const Poly& p, const Poly& q) { return p.coefficients() == q.coefficients(); });
   }
 
-  std::map<std::string, std::size_t> ids_;
+  std::map<Certificate_key, std::size_t> ids_;
   std::vector<Entry> entries_;  // by id; empty when free
   std::vector<std::size_t> free_;
 };

@@ -35,7 +35,7 @@ namespace kvd::kinetic {
 std::vector<symbolic::Symbolic_vertex> intersection_walls(const tree::Node& n);
 
 // The reduced certificates one node makes at `now`, its ancestors being
-// `path` (root first); each named once, by name.
+// `path` (root first); each named once, by key.
 template <class K>
 class Reduced_maker {
 public:
@@ -59,22 +59,22 @@ public:
   };
   struct Work {
     std::size_t nodes = 0;         // nodes that made their certificates
-    std::size_t certificates = 0;  // certificates they made (before merging equal names)
+    std::size_t certificates = 0;  // certificates they made (before merging equal keys)
   };
 
-  // How the set in force changed: the names no longer in force, and the
+  // How the set in force changed: the keys no longer in force, and the
   // certificates new in force, made again, or held by another node now.
   struct Changes {
-    std::vector<std::string> gone;
+    std::vector<Certificate_key> gone;
     std::vector<Held> changed;
   };
 
   // Brings the reduced set up to date with t just after `now`; `failed`
-  // names the certificates that failed since the last update. Each name is
+  // names the certificates that failed since the last update. Each key is
   // in force once, held by the least node slot that has it. The pointers
   // stay valid until the next update or clear().
   Changes update(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now,
-                 const std::set<std::string>& failed, Work& work);
+                 const std::set<Certificate_key>& failed, Work& work);
   // Forgets every node's certificates and what is in force: the next update
   // makes them all, and reports them all as changed.
   void clear();
@@ -104,7 +104,7 @@ private:
   };
   std::vector<Record> records_;
   std::map<Key, int> where_;  // the slot holding each key
-  std::map<std::string, std::set<int>> holders_;  // the slots holding each name
+  std::map<Certificate_key, std::set<int>> holders_;  // the slots holding each key
   std::map<Path, int> paths_;  // every path met since the last clear()
   int next_path_ = 0;
   bool remake_ = false;
