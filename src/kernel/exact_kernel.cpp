@@ -1,6 +1,7 @@
 #include "kvd/kernel/exact_kernel.hpp"
 
 #include "kvd/detail/kernel/descartes.hpp"
+#include "interval.hpp"
 
 namespace kvd {
 
@@ -34,6 +35,15 @@ bool equal_algebraic(const Exact_time& a, const Exact_time& b) {
 }  // namespace
 
 int Exact_kernel::compare(const Time& a, const Time& b) const {
+  if (filter_ && !(a.is_rational() && b.is_rational())) {
+    // Both narrowed to a relative width of about 2^-50 (kept for later calls).
+    const auto x = filter::enclose(a), y = filter::enclose(b);
+    if (x && y && (x->upper() < y->lower() || y->upper() < x->lower())) {
+      ++statistics_->compare.filter;
+      return x->upper() < y->lower() ? -1 : 1;
+    }
+  }
+  if (!(a.is_rational() && b.is_rational())) ++statistics_->compare.exact;
   bool known_distinct = false;
   for (;;) {
     if (a.is_rational() && b.is_rational()) return three_way(a.rational(), b.rational());
@@ -53,6 +63,13 @@ int Exact_kernel::compare(const Time& a, const Time& b) const {
 }
 
 int Exact_kernel::sign_at(const Poly& p, const Time& t) const {
+  if (filter_) {
+    if (const int s = filter::sign_at(p, t)) {
+      ++statistics_->sign_at.filter;
+      return s;
+    }
+  }
+  ++statistics_->sign_at.exact;
   const zpoly::ZPoly z = zpoly::to_zpoly(p);  // a positive multiple: same signs
   if (z.empty()) return 0;
   if (t.is_rational()) return zpoly::sign_at(z, t.rational());

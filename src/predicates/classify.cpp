@@ -1,5 +1,8 @@
 #include "kvd/predicates/classify.hpp"
 
+#include <type_traits>
+
+#include "classify_filter.hpp"
 #include "kvd/geometry/plucker.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -9,7 +12,10 @@ namespace kvd::predicates {
 
 template <class K>
 Classifier<K>::Classifier(const K& k, const scene::Scene& s)
-    : k_(&k), motion_(symbolic::motion_geometry<typename K::FT>(s)), z_euclidean_(!s.z[3].is_zero()) {}
+    : k_(&k), motion_(symbolic::motion_geometry<typename K::FT>(s)), z_euclidean_(!s.z[3].is_zero()) {
+  if constexpr (std::is_same_v<K, Exact_kernel>)
+    if (k.filtered()) filter_ = std::make_shared<Classification_filter>(motion_);
+}
 
 template <class K>
 int Classifier<K>::lex_sign(const typename K::Poly& f, const typename K::Time& t) const {
@@ -112,6 +118,31 @@ template <class K>
 Classification Classifier<K>::classify(const symbolic::Symbolic_vertex& given, const symbolic::Symbolic_plane& p,
                                        const typename K::Time& t) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
+  if constexpr (std::is_same_v<K, Exact_kernel>) {
+    Stage_counts& n = k_->statistics().classify;
+    if (filter_ && !symbolic::on_by_construction(motion_.scene(), v, p, z_euclidean_)) {
+      if (const int s = filter_->side(v, p, t)) {
+        ++n.filter;
+        return {s, Rule::value};
+      }
+    }
+    const Classification c = classify_exactly(v, p, t);
+    switch (c.rule) {
+      case Rule::incidence: break;
+      case Rule::value: ++n.exact; break;
+      case Rule::after: ++n.after; break;
+      case Rule::perturbation:
+      case Rule::unresolved: ++n.perturbation; break;
+    }
+    return c;
+  } else {
+    return classify_exactly(v, p, t);
+  }
+}
+
+template <class K>
+Classification Classifier<K>::classify_exactly(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
+                                               const typename K::Time& t) const {
   const Deciding& d = deciding(v, p);
   if (d.incident) return {0, Rule::incidence};
   // A direction (W identically zero) counts as W > 0, as in kvd::side.

@@ -156,15 +156,17 @@ unsigned mpfr_bits(const std::string& command, const std::string& bits);
 
 // Calls f with the kernel a --kernel option names: exact, double or
 // mpfr:BITS; a floating-point one with `epsilon` when given (--epsilon; the
-// exact kernel has none); returns what f returns.
+// exact kernel has none), the exact one without its interval filter when
+// `filter` is false (--no-filter); returns what f returns.
 template <class F>
 auto with_kernel(const std::string& command, const std::string& name, F&& f,
-                const std::optional<mpq_class>& epsilon = std::nullopt) {
+                const std::optional<mpq_class>& epsilon = std::nullopt, bool filter = true) {
   if (epsilon && *epsilon <= 0) throw Usage_error("kvd " + command + ": --epsilon must be positive");
   if (name == "exact") {
     if (epsilon) throw Usage_error("kvd " + command + ": --epsilon needs --kernel double or mpfr:BITS");
-    return f(Exact_kernel());
+    return f(Exact_kernel(filter));
   }
+  if (!filter) throw Usage_error("kvd " + command + ": --no-filter needs --kernel exact");
   if (name == "double") return f(epsilon ? Double_kernel(epsilon->get_d()) : Double_kernel());
   if (name.rfind("mpfr:", 0) == 0) {
     const unsigned bits = mpfr_bits(command, name.substr(5));

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cli.hpp"
+#include "report.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/detail/scene/exact_number.hpp"
@@ -19,7 +20,8 @@ namespace kvd::cli {
 namespace {
 
 const char* const build_help =
-    "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--bsp] [--tree] [--json]\n"
+    "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--no-filter]\n"
+    "                 [--bsp] [--tree] [--json]\n"
     "\n"
     "Builds the KVD of the scene valid just after time T (default: the scene's\n"
     "start) and prints the construction statistics of the thesis's Figure 8.4:\n"
@@ -29,13 +31,17 @@ const char* const build_help =
     "  --time T        an exact number (\"1/3\", \"0.25\")\n"
     "  --seed S        replace the scene's priority order by the seeded one\n"
     "  --kernel K      exact (default), double, or mpfr:BITS\n"
+    "  --no-filter     exact kernel: every sign in exact arithmetic, without the\n"
+    "                  interval filter in front (the same tree, slower)\n"
     "  --bsp           build the baseline instead: the randomized auto-partition\n"
     "                  BSP with free splits (exact); prints nodes, fragments,\n"
     "                  height and seconds\n"
     "  --tree          print the tree itself instead, one node a line in\n"
     "                  pre-order (the format of Kvd_tree::describe)\n"
     "  --json          one JSON object: vertices, edges, triangles, p_nodes,\n"
-    "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash\n"
+    "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash,\n"
+    "                  filter (the exact kernel's filter statistics, README;\n"
+    "                  null for double and mpfr)\n"
     "\n"
     "Exit status: 0 on success, 2 on a bad scene (including triangles that\n"
     "intersect at T) or bad usage.\n";
@@ -55,7 +61,8 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
               << ", \"triangles\": " << s.triangles.size() << ", \"p_nodes\": " << st.p_nodes
               << ", \"e_nodes\": " << st.e_nodes << ", \"t_nodes\": " << st.t_nodes << ", \"nodes\": " << st.nodes
               << ", \"height\": " << st.height << ", \"seconds\": " << secs
-              << ", \"structure_hash\": " << json_string(tree::structure_hash(t)) << "}\n";
+              << ", \"structure_hash\": " << json_string(tree::structure_hash(t)) << ", \"filter\": " << filter_json(k)
+              << "}\n";
   } else {
     std::cout << "kernel:    " << kernel_label(k) << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
               << "\nedges:     " << s.edges.size() << "\ntriangles: " << s.triangles.size()
@@ -87,7 +94,7 @@ int build(Args& args) {
   Scene_args sa;
   sa.wants_time = true;
   std::string kernel = "exact";
-  bool baseline = false, tree_only = false;
+  bool baseline = false, tree_only = false, filter = true;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -97,6 +104,7 @@ int build(Args& args) {
     if (a == "--bsp") baseline = true;
     else if (a == "--tree") tree_only = true;
     else if (a == "--kernel") kernel = args.value(a);
+    else if (a == "--no-filter") filter = false;
     else if (!sa.take(args, a)) args.unknown(a);
   }
   const scene::Scene s = sa.load_scene("build");
@@ -105,7 +113,7 @@ int build(Args& args) {
   return with_kernel("build", kernel, [&](const auto& k) {
     require_representable(*sa.path, s, k);
     return run(k, *sa.path, s, time, sa.json, tree_only);
-  });
+  }, std::nullopt, filter);
 }
 
 }  // namespace kvd::cli

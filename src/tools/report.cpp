@@ -78,4 +78,18 @@ std::string recovery_text(const kinetic::Recovery& r) {
          std::to_string(r.unrepaired) + " left unrepaired";
 }
 
+std::string filter_json(const Exact_kernel& k) {
+  const Filter_statistics& s = k.statistics();
+  const Stage_counts& c = s.classify;
+  const long decided = c.filter + c.exact + c.after + c.perturbation;
+  auto pair = [](const Stage_counts& n) {
+    return "{\"filter\": " + std::to_string(n.filter) + ", \"exact\": " + std::to_string(n.exact) + "}";
+  };
+  return std::string("{\"on\": ") + (k.filtered() ? "true" : "false") + ", \"classify\": {\"filter\": " +
+         std::to_string(c.filter) + ", \"exact\": " + std::to_string(c.exact) + ", \"after\": " +
+         std::to_string(c.after) + ", \"perturbation\": " + std::to_string(c.perturbation) +
+         ", \"filter_share\": " + fixed(decided ? static_cast<double>(c.filter) / static_cast<double>(decided) : 0, 4) +
+         "}, \"sign_at\": " + pair(s.sign_at) + ", \"compare\": " + pair(s.compare) + "}";
+}
+
 }  // namespace kvd::cli

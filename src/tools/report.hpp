@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
 
 namespace kvd::cli {
@@ -99,5 +101,16 @@ std::string recovery_json(const kinetic::Recovery& r);
 // "collision", "stuck").
 const char* stop_name(kinetic::Stop s);
 std::string recovery_text(const kinetic::Recovery& r);
+
+// How often each stage of the exact kernel's filtered predicates decided,
+// as a JSON object: {"on": BOOL, "classify": {"filter", "exact", "after",
+// "perturbation", "filter_share"}, "sign_at": {"filter", "exact"},
+// "compare": {"filter", "exact"}}; null for the floating-point kernels.
+std::string filter_json(const Exact_kernel& k);
+template <class K>
+std::string filter_json(const K& k) {
+  if constexpr (std::is_same_v<K, Exact_kernel>) return filter_json(static_cast<const Exact_kernel&>(k));
+  else return "null";
+}
 
 }  // namespace kvd::cli

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -25,6 +26,8 @@
 #include "kvd/symbolic/symbolic.hpp"
 
 namespace kvd::predicates {
+
+class Classification_filter;  // the exact kernel's interval filter (src/predicates/classify_filter.hpp)
 
 enum class Rule { incidence, value, after, perturbation, unresolved };
 
@@ -97,6 +100,9 @@ private:
   // every batch and classifies mostly the same pairs again.
   const Deciding& deciding(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
   Deciding decide(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const;
+  // Rules 1-4 in exact arithmetic, v canonical.
+  Classification classify_exactly(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
+                                  const typename K::Time& t) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
 
   const K* k_;
@@ -108,6 +114,9 @@ private:
       certificates_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
+  // Rule 2 on intervals first: the exact kernel with its filter on only.
+  // Copies share it (it caches the positions at the last instant only).
+  std::shared_ptr<Classification_filter> filter_;
   mutable long unresolved_ = 0;
   mutable std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>> unresolved_cases_;
 };

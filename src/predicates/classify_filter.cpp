@@ -1,0 +1,104 @@
+#include "classify_filter.hpp"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "../kernel/interval.hpp"
+#include "kvd/detail/geometry/plucker_impl.hpp"
+#include "kvd/detail/symbolic/scene_geometry_impl.hpp"
+
+namespace kvd::predicates {
+
+using filter::Interval;
+
+namespace {
+
+using Motion = std::array<std::vector<Interval>, 4>;  // a point's coordinates, coefficients as intervals
+
+std::optional<Motion> enclose(const Point4<Poly<mpq_class>>& p) {
+  Motion m;
+  for (int k = 0; k < 4; ++k) {
+    auto c = filter::enclose(p[k]);
+    if (!c) return std::nullopt;
+    m[static_cast<std::size_t>(k)] = std::move(*c);
+  }
+  return m;
+}
+
+// The point at t; none when a coordinate exceeds filter::max_input.
+std::optional<Point4<Interval>> at(const Motion& m, const Interval& t) {
+  Point4<Interval> p;
+  for (int k = 0; k < 4; ++k) {
+    const auto v = filter::evaluate(m[static_cast<std::size_t>(k)], t);
+    if (!v || !(v->upper() <= filter::max_input && v->lower() >= -filter::max_input)) return std::nullopt;
+    p[k] = *v;
+  }
+  return p;
+}
+
+}  // namespace
+
+struct Classification_filter::State {
+  const scene::Scene* scene;
+  bool usable = true;  // false when some motion coefficient is too large to filter
+  std::vector<Motion> vertices;
+  Motion x, z;
+  // The positions on the last instant's interval (valid for every instant
+  // in it), or none when they are too large to filter.
+  std::optional<Interval> instant;
+  std::optional<symbolic::Scene_geometry<Interval>> positions;
+
+  void move_to(const Interval& t) {
+    if (instant && instant->lower() == t.lower() && instant->upper() == t.upper()) return;
+    instant = t;
+    positions.reset();
+    const filter::Rounding_scope upward;
+    std::vector<Point4<Interval>> v;
+    v.reserve(vertices.size());
+    for (const Motion& m : vertices) {
+      auto p = at(m, t);
+      if (!p) return;
+      v.push_back(*p);
+    }
+    auto px = at(x, t), pz = at(z, t);
+    if (px && pz) positions.emplace(*scene, std::move(v), *px, *pz);
+  }
+};
+
+Classification_filter::Classification_filter(const symbolic::Scene_geometry<Poly<mpq_class>>& motion)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.scene = &motion.scene();
+  auto x = enclose(motion.x()), z = enclose(motion.z());
+  s.usable = x && z;
+  if (s.usable) s.x = std::move(*x), s.z = std::move(*z);
+  for (const auto& p : motion.vertices()) {
+    auto m = enclose(p);
+    if (!m) {
+      s.usable = false;
+      break;
+    }
+    s.vertices.push_back(std::move(*m));
+  }
+}
+
+Classification_filter::~Classification_filter() = default;
+
+int Classification_filter::side(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
+                                const Exact_time& t) {
+  State& s = *state_;
+  if (!s.usable) return 0;
+  const auto when = filter::enclose(t);
+  if (!when) return 0;
+  s.move_to(*when);
+  if (!s.positions) return 0;
+  const filter::Rounding_scope upward;
+  const Point4<Interval> x = s.positions->point(v);
+  const int value = filter::sign(dot(s.positions->plane(p), x));
+  // A scene vertex has W > 0 (scene_geometry.hpp); a derived one needs its sign.
+  const int w = v.kind == symbolic::Symbolic_vertex::Kind::endpoint ? 1 : filter::sign(x[3]);
+  return value * w;
+}
+
+}  // namespace kvd::predicates
