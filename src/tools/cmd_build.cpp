@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cli.hpp"
+#include "json_out.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/detail/scene/exact_number.hpp"
@@ -50,12 +51,13 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
   if (tree_only) {
     std::cout << t.describe();
   } else if (json) {
-    std::cout << "{\"kernel\": " << json_string(kernel_label(k)) << ", \"time\": " << json_string(time.get_str())
-              << ", \"vertices\": " << s.rest.size() << ", \"edges\": " << s.edges.size()
-              << ", \"triangles\": " << s.triangles.size() << ", \"p_nodes\": " << st.p_nodes
-              << ", \"e_nodes\": " << st.e_nodes << ", \"t_nodes\": " << st.t_nodes << ", \"nodes\": " << st.nodes
-              << ", \"height\": " << st.height << ", \"seconds\": " << secs
-              << ", \"structure_hash\": " << json_string(tree::structure_hash(t)) << "}\n";
+    const Json j = {{"kernel", kernel_label(k)}, {"time", time.get_str()},
+                    {"vertices", s.rest.size()}, {"edges", s.edges.size()},
+                    {"triangles", s.triangles.size()}, {"p_nodes", st.p_nodes},
+                    {"e_nodes", st.e_nodes}, {"t_nodes", st.t_nodes}, {"nodes", st.nodes},
+                    {"height", st.height}, {"seconds", decimal(secs)},
+                    {"structure_hash", tree::structure_hash(t)}};
+    std::cout << json_line(j) << "\n";
   } else {
     std::cout << "kernel:    " << kernel_label(k) << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
               << "\nedges:     " << s.edges.size() << "\ntriangles: " << s.triangles.size()
@@ -71,9 +73,10 @@ int run_bsp(const scene::Scene& s, const scene::Q& time, bool json) {
   const bsp::Tree t = bsp::autopartition(s, time);
   const std::string secs = seconds_since(start);
   if (json)
-    std::cout << "{\"structure\": \"bsp\", \"time\": " << json_string(time.get_str()) << ", \"triangles\": "
-              << s.triangles.size() << ", \"nodes\": " << t.nodes.size() << ", \"fragments\": " << t.fragments()
-              << ", \"height\": " << t.height() << ", \"seconds\": " << secs << "}\n";
+    std::cout << json_line({{"structure", "bsp"}, {"time", time.get_str()}, {"triangles", s.triangles.size()},
+                            {"nodes", t.nodes.size()}, {"fragments", t.fragments()}, {"height", t.height()},
+                            {"seconds", decimal(secs)}})
+              << "\n";
   else
     std::cout << "structure: auto-partition BSP\ntime:      " << time.get_str() << "\ntriangles: " << s.triangles.size()
               << "\nnodes:     " << t.nodes.size() << "\nfragments: " << t.fragments() << "\nheight:    " << t.height()

@@ -54,12 +54,6 @@ double log10_of(const mpq_class& q) {
   return mpfr_get_d(w.v, MPFR_RNDN);
 }
 
-std::string recovery_json(const kinetic::Recovery& r) {
-  return "{\"failed_builds\": " + std::to_string(r.failed_builds) + ", \"refires\": " +
-         std::to_string(r.refires) + ", \"stale_trees\": " + std::to_string(r.stale_trees) +
-         ", \"rebuilds\": " + std::to_string(r.rebuilds) + ", \"zones_skipped\": " + std::to_string(r.zones_skipped) + ", \"unrepaired\": " + std::to_string(r.unrepaired) + "}";
-}
-
 const char* stop_name(kinetic::Stop s) {
   switch (s) {
     case kinetic::Stop::events: return "events";

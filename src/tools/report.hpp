@@ -93,11 +93,10 @@ Recomputed certificates_recomputed(const kinetic::Simulation<Time>& sim) {
   return r;
 }
 
-// A floating-point run's recovery counts, as a JSON object and in words.
-std::string recovery_json(const kinetic::Recovery& r);
 // Why a run stopped, one word for JSON ("events", "limit", "exhausted",
 // "collision", "stuck").
 const char* stop_name(kinetic::Stop s);
+// A floating-point run's recovery counts, in words.
 std::string recovery_text(const kinetic::Recovery& r);
 
 }  // namespace kvd::cli

@@ -1,0 +1,34 @@
+// The JSON that kvd prints: values built as nlohmann::ordered_json (keys in
+// the order they are set) and written in the layouts the commands use.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "kvd/kinetic/simulation.hpp"
+
+namespace kvd::cli {
+
+using Json = nlohmann::ordered_json;
+
+// On one line, with ", " between items and ": " after keys:
+// {"a": 1, "b": ["x", "y"]}.
+std::string json_line(const Json& v);
+// An object with one member a line, and the items of a non-empty array
+// member one a line after a space, each item as json_line writes it.
+std::string json_lines(const Json& v);
+
+// JSON text made by another writer (a motion, a scene), which json_line and
+// json_lines copy as it is, so that its own layout stays.
+Json verbatim(const std::string& json_text);
+
+// A number printed as decimal text (by fixed, scientific or seconds_since),
+// read as any JSON reader reads that text.
+Json decimal(const std::string& text);
+
+// A floating-point run's recovery counts.
+Json recovery_json(const kinetic::Recovery& r);
+// Counts by certificate type, keyed by the type's name.
+Json type_counts_json(const kinetic::Type_counts& counts);
+
+}  // namespace kvd::cli
