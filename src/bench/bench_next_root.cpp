@@ -117,13 +117,15 @@ int main(int argc, char** argv) {
     }
     const double mo = median(ours), mc = median(cgal);
     if (o.json)
-      results.push_back({{"degree", d}, {"median_us_exact_kernel", mo}, {"median_us_cgal", mc}, {"disagreements", disagreements}});
+      results.push_back(
+          {{"degree", d}, {"median_us_exact_kernel", mo}, {"median_us_cgal", mc}, {"disagreements", disagreements}});
     else
       std::printf("%6d %8.1f %8.1f %10.2f %14d\n", d, mo, mc, mc / mo, disagreements);
     if (disagreements) std::cerr << "kvd_bench_next_root: " << disagreements << " disagreements at degree " << d << "\n";
   }
   if (o.json)
-    std::cout << nlohmann::ordered_json{{"family", o.family}, {"bits", o.bits}, {"count", o.count}, {"results", results}}.dump()
+    std::cout << nlohmann::ordered_json{{"family", o.family}, {"bits", o.bits}, {"count", o.count},
+                                        {"results", results}}.dump()
               << "\n";
   return 0;
 }

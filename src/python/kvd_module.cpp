@@ -41,7 +41,9 @@ Scene scene_from_lists(const py::list& objects, const py::handle& start, const p
     for (const auto& i : py::reinterpret_borrow<py::list>(items)) out.push_back(item(i));
     return out;
   };
-  const auto points = [&](const py::handle& items) { return list(items, [&](const py::handle& p) { return list(p, number); }); };
+  const auto points = [&](const py::handle& items) {
+    return list(items, [&](const py::handle& p) { return list(p, number); });
+  };
   Json time = {{"start", number(start)}};
   if (!end.is_none()) time["end"] = number(end);
   Json scene = {{"format", "kvd-scene/1"}, {"priority", {{"seed", seed}}}, {"time", time}, {"objects", Json::array()}};

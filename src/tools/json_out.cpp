@@ -47,13 +47,16 @@ std::string json_lines(const Json& v) {
 }
 
 // Held as a binary value, which nothing else in kvd's JSON is.
-Json verbatim(const std::string& json_text) { return Json::binary(Json::binary_t::container_type(json_text.begin(), json_text.end())); }
+Json verbatim(const std::string& json_text) {
+  return Json::binary(Json::binary_t::container_type(json_text.begin(), json_text.end()));
+}
 
-Json decimal(const std::string& text) { return Json::parse(text); }
+Json decimal(const std::string& text) { return verbatim(text); }
 
 Json recovery_json(const kinetic::Recovery& r) {
-  return {{"failed_builds", r.failed_builds}, {"refires", r.refires},         {"stale_trees", r.stale_trees},
-          {"rebuilds", r.rebuilds},           {"zones_skipped", r.zones_skipped}, {"unrepaired", r.unrepaired}};
+  return {{"failed_builds", r.failed_builds}, {"refires", r.refires},
+          {"stale_trees", r.stale_trees},     {"rebuilds", r.rebuilds},
+          {"zones_skipped", r.zones_skipped}, {"unrepaired", r.unrepaired}};
 }
 
 Json type_counts_json(const kinetic::Type_counts& counts) {

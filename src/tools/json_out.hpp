@@ -23,7 +23,7 @@ std::string json_lines(const Json& v);
 Json verbatim(const std::string& json_text);
 
 // A number printed as decimal text (by fixed, scientific or seconds_since),
-// read as any JSON reader reads that text.
+// written as that text: "1.000" stays, and "1.00e-400" does not underflow.
 Json decimal(const std::string& text);
 
 // A floating-point run's recovery counts.
