@@ -9,9 +9,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "cgal_roots.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
@@ -90,9 +91,7 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   const kvd::Exact_kernel k;
   const mpq_class after(0);
-  std::ostringstream json;
-  json << "{\"family\": \"" << o.family << "\", \"bits\": " << o.bits << ", \"count\": " << o.count
-       << ", \"results\": [";
+  nlohmann::ordered_json results = nlohmann::ordered_json::array();
   if (!o.json) std::cout << "degree  ours_us  cgal_us  cgal/ours  disagreements\n";
   for (std::size_t di = 0; di < o.degrees.size(); ++di) {
     const int d = o.degrees[di];
@@ -118,12 +117,15 @@ int main(int argc, char** argv) {
     }
     const double mo = median(ours), mc = median(cgal);
     if (o.json)
-      json << (di ? ", " : "") << "{\"degree\": " << d << ", \"median_us_exact_kernel\": " << mo
-           << ", \"median_us_cgal\": " << mc << ", \"disagreements\": " << disagreements << "}";
+      results.push_back(
+          {{"degree", d}, {"median_us_exact_kernel", mo}, {"median_us_cgal", mc}, {"disagreements", disagreements}});
     else
       std::printf("%6d %8.1f %8.1f %10.2f %14d\n", d, mo, mc, mc / mo, disagreements);
     if (disagreements) std::cerr << "kvd_bench_next_root: " << disagreements << " disagreements at degree " << d << "\n";
   }
-  if (o.json) std::cout << json.str() << "]}\n";
+  if (o.json)
+    std::cout << nlohmann::ordered_json{{"family", o.family}, {"bits", o.bits}, {"count", o.count},
+                                        {"results", results}}.dump()
+              << "\n";
   return 0;
 }

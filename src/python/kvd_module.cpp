@@ -5,8 +5,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <nlohmann/json.hpp>
+
 #include <memory>
-#include <sstream>
 #include <string>
 #include <variant>
 
@@ -32,35 +33,28 @@ py::object to_fraction(const mpq_class& q) { return py::module_::import("fractio
 // A scene from Python lists: turned into kvd-scene/1 text with exact
 // numbers, so that it goes through the file format's full validation.
 Scene scene_from_lists(const py::list& objects, const py::handle& start, const py::handle& end, std::uint64_t seed) {
-  const auto number = [](const py::handle& x) { return "\"" + to_mpq(x).get_str() + "\""; };
+  using Json = nlohmann::ordered_json;
+  const auto number = [](const py::handle& x) { return Json(to_mpq(x).get_str()); };
+  const auto index = [](const py::handle& i) { return Json(i.cast<std::size_t>()); };
   const auto list = [](const py::handle& items, const auto& item) {
-    std::string out = "[";
-    bool first = true;
-    for (const auto& i : py::reinterpret_borrow<py::list>(items)) {
-      out += (first ? "" : ", ") + item(i);
-      first = false;
-    }
-    return out + "]";
+    Json out = Json::array();
+    for (const auto& i : py::reinterpret_borrow<py::list>(items)) out.push_back(item(i));
+    return out;
   };
-  std::ostringstream text;
-  text << "{\"format\": \"kvd-scene/1\", \"priority\": {\"seed\": " << seed << "}, \"time\": {\"start\": "
-       << number(start) << (end.is_none() ? "" : ", \"end\": " + number(end)) << "}, \"objects\": [";
-  bool first = true;
+  const auto points = [&](const py::handle& items) {
+    return list(items, [&](const py::handle& p) { return list(p, number); });
+  };
+  Json time = {{"start", number(start)}};
+  if (!end.is_none()) time["end"] = number(end);
+  Json scene = {{"format", "kvd-scene/1"}, {"priority", {{"seed", seed}}}, {"time", time}, {"objects", Json::array()}};
   for (const auto& o : objects) {
     const auto d = py::reinterpret_borrow<py::dict>(o);
-    text << (first ? "" : ", ") << "{\"vertices\": "
-         << list(d["vertices"], [&](const py::handle& v) { return list(v, number); })
-         << ", \"triangles\": " << list(d["triangles"], [&](const py::handle& t) {
-              return list(t, [](const py::handle& i) { return std::to_string(i.cast<std::size_t>()); });
-            });
-    if (d.contains("translation"))
-      text << ", \"motion\": {\"translation\": "
-           << list(d["translation"], [&](const py::handle& p) { return list(p, number); }) << "}";
-    text << "}";
-    first = false;
+    Json object = {{"vertices", points(d["vertices"])},
+                   {"triangles", list(d["triangles"], [&](const py::handle& t) { return list(t, index); })}};
+    if (d.contains("translation")) object["motion"] = {{"translation", points(d["translation"])}};
+    scene["objects"].push_back(object);
   }
-  text << "]}";
-  return kvd::scene::read_scene(text.str(), "the scene given to kvd.scene");
+  return kvd::scene::read_scene(scene.dump(), "the scene given to kvd.scene");
 }
 
 py::dict statistics(const kvd::tree::Kvd_tree& t) {

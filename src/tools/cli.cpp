@@ -1,7 +1,5 @@
 #include "cli.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -136,7 +134,5 @@ std::string seconds_since(std::chrono::steady_clock::time_point start) {
 bool ends_with(const std::string& name, const std::string& tail) {
   return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
 }
-
-std::string json_string(const std::string& s) { return nlohmann::json(s).dump(); }
 
 }  // namespace kvd::cli

@@ -187,8 +187,4 @@ std::string seconds_since(std::chrono::steady_clock::time_point start);
 // Whether a file name ends with `tail` (".svg"): which output to write.
 bool ends_with(const std::string& name, const std::string& tail);
 
-// JSON string literal for s (quotes and escapes).
-std::string json_string(const std::string& s);
-
-
 }  // namespace kvd::cli

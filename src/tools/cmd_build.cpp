@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "cli.hpp"
-#include "report.hpp"
+#include "json_out.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/detail/scene/exact_number.hpp"
@@ -22,6 +22,8 @@ namespace {
 const char* const build_help =
     "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--no-filter]\n"
     "                 [--bsp] [--tree] [--json]\n"
+    "  --no-filter     exact kernel: every sign in exact arithmetic, without the\n"
+    "                  interval filter in front (the same tree, slower)\n"
     "\n"
     "Builds the KVD of the scene valid just after time T (default: the scene's\n"
     "start) and prints the construction statistics of the thesis's Figure 8.4:\n"
@@ -31,8 +33,6 @@ const char* const build_help =
     "  --time T        an exact number (\"1/3\", \"0.25\")\n"
     "  --seed S        replace the scene's priority order by the seeded one\n"
     "  --kernel K      exact (default), double, or mpfr:BITS\n"
-    "  --no-filter     exact kernel: every sign in exact arithmetic, without the\n"
-    "                  interval filter in front (the same tree, slower)\n"
     "  --bsp           build the baseline instead: the randomized auto-partition\n"
     "                  BSP with free splits (exact); prints nodes, fragments,\n"
     "                  height and seconds\n"
@@ -56,13 +56,13 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
   if (tree_only) {
     std::cout << t.describe();
   } else if (json) {
-    std::cout << "{\"kernel\": " << json_string(kernel_label(k)) << ", \"time\": " << json_string(time.get_str())
-              << ", \"vertices\": " << s.rest.size() << ", \"edges\": " << s.edges.size()
-              << ", \"triangles\": " << s.triangles.size() << ", \"p_nodes\": " << st.p_nodes
-              << ", \"e_nodes\": " << st.e_nodes << ", \"t_nodes\": " << st.t_nodes << ", \"nodes\": " << st.nodes
-              << ", \"height\": " << st.height << ", \"seconds\": " << secs
-              << ", \"structure_hash\": " << json_string(tree::structure_hash(t)) << ", \"filter\": " << filter_json(k)
-              << "}\n";
+    const Json j = {{"kernel", kernel_label(k)}, {"time", time.get_str()},
+                    {"vertices", s.rest.size()}, {"edges", s.edges.size()},
+                    {"triangles", s.triangles.size()}, {"p_nodes", st.p_nodes},
+                    {"e_nodes", st.e_nodes}, {"t_nodes", st.t_nodes}, {"nodes", st.nodes},
+                    {"height", st.height}, {"seconds", decimal(secs)},
+                    {"structure_hash", tree::structure_hash(t)}, {"filter", filter_json(k)}};
+    std::cout << json_line(j) << "\n";
   } else {
     std::cout << "kernel:    " << kernel_label(k) << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
               << "\nedges:     " << s.edges.size() << "\ntriangles: " << s.triangles.size()
@@ -78,9 +78,10 @@ int run_bsp(const scene::Scene& s, const scene::Q& time, bool json) {
   const bsp::Tree t = bsp::autopartition(s, time);
   const std::string secs = seconds_since(start);
   if (json)
-    std::cout << "{\"structure\": \"bsp\", \"time\": " << json_string(time.get_str()) << ", \"triangles\": "
-              << s.triangles.size() << ", \"nodes\": " << t.nodes.size() << ", \"fragments\": " << t.fragments()
-              << ", \"height\": " << t.height() << ", \"seconds\": " << secs << "}\n";
+    std::cout << json_line({{"structure", "bsp"}, {"time", time.get_str()}, {"triangles", s.triangles.size()},
+                            {"nodes", t.nodes.size()}, {"fragments", t.fragments()}, {"height", t.height()},
+                            {"seconds", decimal(secs)}})
+              << "\n";
   else
     std::cout << "structure: auto-partition BSP\ntime:      " << time.get_str() << "\ntriangles: " << s.triangles.size()
               << "\nnodes:     " << t.nodes.size() << "\nfragments: " << t.fragments() << "\nheight:    " << t.height()

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "json_out.hpp"
 #include "kvd/kinetic/event_order.hpp"
 #include "kvd/scene/scene_io.hpp"
 
@@ -34,63 +35,60 @@ const char* const certify_help =
     "FILE is written completely or not at all. Exit status: 0 on success, 1 on a\n"
     "failed validation (nothing written), 2 on bad input.\n";
 
-std::string integers(const zpoly::ZPoly& p) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < p.size(); ++i) out += (i ? ", " : "") + json_string(p[i].get_str());
-  return out + "]";
-}
-
-template <class T, class Show>
-std::string array(const std::vector<T>& v, Show show) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + show(v[i]);
-  return out + "]";
-}
-
+// The layout of json_lines: the certificates, events, intervals and motion
+// changes one a line; the scene as the scene writer lays it out.
 std::string document(const scene::Scene& s, const kinetic::Event_order& order, const std::optional<mpq_class>& end,
                      const char* stopped_by) {
   using Order = kinetic::Event_order;
-  auto kind_features = [&](std::size_t id) {
+  const auto certificate = [&](std::size_t id) {
     const auto& c = order.certificates[id];
-    return "\"kind\": " + json_string(kinetic::to_string(c.key.type)) + ", \"features\": " + json_string(kinetic::features(c.key)) +
-           ", \"polynomial\": " + integers(c.polynomial);
+    Json polynomial = Json::array();
+    for (const auto& a : c.polynomial) polynomial.push_back(a.get_str());
+    return Json{{"kind", kinetic::to_string(c.key.type)}, {"features", kinetic::features(c.key)}, {"polynomial", polynomial}};
   };
-  auto root = [&](const Order::Root& r) {
-    return "\"certificate\": " + std::to_string(r.certificate) + ", " + kind_features(r.certificate) +
-           ", \"interval\": [" + json_string(r.lo.get_str()) + ", " + json_string(r.hi.get_str()) +
-           "], \"multiplicity\": " + std::to_string(r.multiplicity);
+  const auto root = [&](const Order::Root& r) {
+    Json j = {{"certificate", r.certificate}};
+    j.update(certificate(r.certificate));
+    j["interval"] = Json::array({r.lo.get_str(), r.hi.get_str()});
+    j["multiplicity"] = r.multiplicity;
+    return j;
   };
-  const auto number = [](std::size_t i) { return std::to_string(i); };
-  // One item per line: "[\n a,\n b\n]", or "[]".
-  const auto lines = [](std::size_t n, const auto& item) {
-    if (n == 0) return std::string("[]");
-    std::string out = "[";
-    for (std::size_t i = 0; i < n; ++i) out += (i ? ",\n " : "\n ") + item(i);
-    return out + "\n]";
-  };
-  const auto certificate = [&](std::size_t i) {
-    return "{" + kind_features(i) + ", \"motions\": " + std::to_string(order.certificates[i].motions) + "}";
-  };
-  const auto event = [&](std::size_t i) {
-    const auto& e = order.events[i];
-    return "{" + root(e) + ", \"order\": \"" + (e.equal_to_previous ? "=" : "<") +
-           "\", \"collision\": " + (e.collision ? "true" : "false") + "}";
-  };
-  const auto interval = [&](std::size_t i) { return "{\"active\": " + array(order.intervals[i], number) + "}"; };
-  const auto change = [&](std::size_t i) {
-    const auto& c = order.motion_changes[i];
-    return "{\"after_events\": " + std::to_string(c.after_events) + ", \"time\": " + json_string(c.time.get_str()) +
-           ", \"failing\": " + array(c.failing, [&](const Order::Root& r) { return "{" + root(r) + "}"; }) +
-           ", \"objects\": " + array(c.objects, number) + ", \"motions\": " + array(c.motions, scene::write_motion) +
-           ", \"contact\": " + json_string(c.contact) + "}";
-  };
-  return "{\n\"format\": \"kvd-event-order/2\",\n\"scene\": " + scene::write_scene(s) +
-         ",\n\"certificate_set\": \"reduced\",\n\"start\": " + json_string(s.start.get_str()) +
-         ",\n\"end\": " + (end ? json_string(end->get_str()) : "null") + ",\n\"stopped_by\": " + json_string(stopped_by) +
-         ",\n\"certificates\": " + lines(order.certificates.size(), certificate) +
-         ",\n\"events\": " + lines(order.events.size(), event) +
-         ",\n\"intervals\": " + lines(order.intervals.size(), interval) +
-         ",\n\"motion_changes\": " + lines(order.motion_changes.size(), change) + "\n}\n";
+  Json certificates = Json::array();
+  for (std::size_t i = 0; i < order.certificates.size(); ++i) {
+    certificates.push_back(certificate(i));
+    certificates.back()["motions"] = order.certificates[i].motions;
+  }
+  Json events = Json::array();
+  for (const auto& e : order.events) {
+    events.push_back(root(e));
+    events.back()["order"] = e.equal_to_previous ? "=" : "<";
+    events.back()["collision"] = e.collision;
+  }
+  Json intervals = Json::array();
+  for (const auto& active : order.intervals) intervals.push_back({{"active", active}});
+  Json changes = Json::array();
+  for (const auto& c : order.motion_changes) {
+    Json failing = Json::array(), motions = Json::array();
+    for (const auto& r : c.failing) failing.push_back(root(r));
+    for (const auto& m : c.motions) motions.push_back(verbatim(scene::write_motion(m)));
+    changes.push_back({{"after_events", c.after_events},
+                       {"time", c.time.get_str()},
+                       {"failing", failing},
+                       {"objects", c.objects},
+                       {"motions", motions},
+                       {"contact", c.contact}});
+  }
+  const Json doc = {{"format", "kvd-event-order/2"},
+                    {"scene", verbatim(scene::write_scene(s))},
+                    {"certificate_set", "reduced"},
+                    {"start", s.start.get_str()},
+                    {"end", end ? Json(end->get_str()) : Json(nullptr)},
+                    {"stopped_by", stopped_by},
+                    {"certificates", certificates},
+                    {"events", events},
+                    {"intervals", intervals},
+                    {"motion_changes", changes}};
+  return json_lines(doc) + "\n";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "json_out.hpp"
 #include "kvd/kinetic/differential.hpp"
 #include "report.hpp"
 
@@ -42,42 +43,51 @@ const char* const diff_help =
     "events_compared when the runs differ only after the last exact event.\n"
     "Divergence is a finding: exit status 0, or 2 on bad input.\n";
 
-std::string json_number(const std::optional<mpq_class>& q) { return q ? scientific(*q) : "null"; }
+// An exact error in scientific notation, or null.
+Json error_json(const std::optional<mpq_class>& q) { return q ? decimal(scientific(*q)) : Json(nullptr); }
 
 void print_json(const std::string& scene, const std::string& kernel, const kinetic::Differential& d,
                 const kinetic::Simulation<Exact_time>& exact) {
-  std::cout << "{\"scene\": " << json_string(scene) << ", \"kernel\": " << json_string(kernel) << ", \"events\": [";
+  Json events = Json::array();
   for (std::size_t i = 0; i < d.events.size(); ++i) {
     const auto& m = d.events[i];
     const Exact_time& t = exact.batches[m.exact_batch].time;
-    std::cout << (i ? ",\n  " : "\n  ") << "{\"event\": " << i << ", \"certificate\": "
-              << json_string(kinetic::to_string(m.failure.type)) << ", \"nodes\": " << json_string(kinetic::features(m.failure))
-              << ", \"exact_time\": " << json_string(t.to_string()) << ", \"exact_approx\": " << json_string(approx(t.to_double()))
-              << ", \"inexact_event\": " << (m.inexact_event ? std::to_string(*m.inexact_event) : "null")
-              << ", \"inexact_time\": " << (m.inexact_event ? json_string(d.inexact[*m.inexact_event].time) : "null")
-              << ", \"in_order\": " << (m.in_order ? "true" : "false")
-              << ", \"structure_equal\": " << (m.structure_equal ? "true" : "false")
-              << ", \"time_error\": " << (m.inexact_event ? scientific(m.time_error) : "null")
-              << ", \"relative_time_error\": " << json_number(m.relative_time_error) << "}";
+    events.push_back({{"event", i},
+                      {"certificate", kinetic::to_string(m.failure.type)},
+                      {"nodes", kinetic::features(m.failure)},
+                      {"exact_time", t.to_string()},
+                      {"exact_approx", approx(t.to_double())},
+                      {"inexact_event", m.inexact_event ? Json(*m.inexact_event) : Json(nullptr)},
+                      {"inexact_time", m.inexact_event ? Json(d.inexact[*m.inexact_event].time) : Json(nullptr)},
+                      {"in_order", m.in_order},
+                      {"structure_equal", m.structure_equal},
+                      {"time_error", m.inexact_event ? decimal(scientific(m.time_error)) : Json(nullptr)},
+                      {"relative_time_error", error_json(m.relative_time_error)}});
   }
-  std::cout << "], \"spurious\": [";
-  bool first = true;
-  for (std::size_t j = 0; j < d.inexact.size(); ++j) {
-    if (d.inexact[j].exact_event) continue;
-    std::cout << (first ? "\n  " : ",\n  ") << "{\"inexact_event\": " << j << ", \"certificate\": "
-              << json_string(kinetic::to_string(d.inexact[j].failure.type))
-              << ", \"nodes\": " << json_string(kinetic::features(d.inexact[j].failure))
-              << ", \"inexact_time\": " << json_string(d.inexact[j].time) << "}";
-    first = false;
-  }
-  std::cout << "],\n\"events_compared\": " << d.events.size() << ", \"first_divergence_event\": "
-            << (d.first_divergence_event ? std::to_string(*d.first_divergence_event) : "null")
-            << ", \"order_mismatches\": " << d.order_mismatches << ", \"missed_events\": " << d.missed_events
-            << ", \"spurious_events\": " << d.spurious_events << ", \"structure_mismatches\": " << d.structure_mismatches
-            << ", \"max_time_error\": " << scientific(d.max_time_error)
-            << ", \"max_relative_time_error\": " << scientific(d.max_relative_time_error)
-            << ", \"seconds_exact\": " << fixed(d.seconds_exact, 6) << ", \"seconds_inexact\": " << fixed(d.seconds_inexact, 6)
-            << ", \"recovery\": " << recovery_json(d.recovery) << "}\n";
+  Json spurious = Json::array();
+  for (std::size_t j = 0; j < d.inexact.size(); ++j)
+    if (!d.inexact[j].exact_event)
+      spurious.push_back({{"inexact_event", j},
+                          {"certificate", kinetic::to_string(d.inexact[j].failure.type)},
+                          {"nodes", kinetic::features(d.inexact[j].failure)},
+                          {"inexact_time", d.inexact[j].time}});
+  const Json report = {
+      {"scene", scene},
+      {"kernel", kernel},
+      {"events", events},
+      {"spurious", spurious},
+      {"events_compared", d.events.size()},
+      {"first_divergence_event", d.first_divergence_event ? Json(*d.first_divergence_event) : Json(nullptr)},
+      {"order_mismatches", d.order_mismatches},
+      {"missed_events", d.missed_events},
+      {"spurious_events", d.spurious_events},
+      {"structure_mismatches", d.structure_mismatches},
+      {"max_time_error", decimal(scientific(d.max_time_error))},
+      {"max_relative_time_error", decimal(scientific(d.max_relative_time_error))},
+      {"seconds_exact", decimal(fixed(d.seconds_exact, 6))},
+      {"seconds_inexact", decimal(fixed(d.seconds_inexact, 6))},
+      {"recovery", recovery_json(d.recovery)}};
+  std::cout << json_lines(report) << "\n";
 }
 
 void print_text(const char* kernel, const kinetic::Differential& d, const kinetic::Simulation<Exact_time>& exact) {

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "cli.hpp"
+#include "json_out.hpp"
 #include "kvd/scene/scene_io.hpp"
 
 namespace kvd::cli {
@@ -37,11 +38,11 @@ int info(Args& args) {
   const bool json = sa.json;
   const std::size_t moving = s.moving_triangle_count();
   if (json) {
-    std::cout << "{\"file\": " << json_string(path) << ", \"name\": " << json_string(s.name)
-              << ", \"objects\": " << s.objects.size() << ", \"vertices\": " << s.rest.size()
-              << ", \"edges\": " << s.edges.size() << ", \"triangles\": " << s.triangles.size()
-              << ", \"moving_triangles\": " << moving << ", \"max_motion_degree\": " << s.max_motion_degree()
-              << "}\n";
+    std::cout << json_line({{"file", path}, {"name", s.name}, {"objects", s.objects.size()},
+                            {"vertices", s.rest.size()}, {"edges", s.edges.size()},
+                            {"triangles", s.triangles.size()}, {"moving_triangles", moving},
+                            {"max_motion_degree", s.max_motion_degree()}})
+              << "\n";
   } else {
     std::cout << "scene:             " << (s.name.empty() ? "(unnamed)" : s.name) << " (" << path << ")\n"
               << "objects:           " << s.objects.size() << "\n"

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "cli.hpp"
+#include "json_out.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/query/visibility.hpp"
 #include "kvd/scene/scene_io.hpp"
@@ -54,38 +55,40 @@ int order(Args& args) {
   const Point4<mpq_class> eye{{view[0], view[1], view[2], mpq_class(1)}};
   const query::Culling culling =
       cull ? query::back_to_front_culled(c, t, time) : query::Culling{query::back_to_front(c, t, eye, time)};
-  std::cout << (json ? "{\"fragments\": [" : "");
-  bool first = true;
+  Json fragments = Json::array();
   for (int i : culling.order) {
     const tree::Node& n = t.nodes[static_cast<std::size_t>(i)];
-    std::cout << (json ? (first ? "{" : ", {") : "") << (json ? "\"triangle\": " : "triangle ") << n.cut.id
-              << (json ? ", \"vertices\": [" : ":");
-    bool first_vertex = true;
+    Json vertices = Json::array();
     for (const auto& v : std::get<tree::Triangle_fragment>(n.fragment).corners) {
       const auto p = c.position(v);
       const mpq_class w = p[3](time);
-      std::cout << (json ? (first_vertex ? "[" : ", [") : " (");
-      for (int j = 0; j < 3; ++j) {
-        const mpq_class x = p[j](time) / w;
-        std::cout << (j ? (json ? ", " : " ") : "") << (json ? json_string(x.get_str()) : x.get_str());
-      }
-      std::cout << (json ? "]" : ")");
-      first_vertex = false;
+      Json xyz = Json::array();
+      for (int j = 0; j < 3; ++j) xyz.push_back(mpq_class(p[j](time) / w).get_str());
+      vertices.push_back(xyz);
     }
-    std::cout << (json ? "]}" : "\n");
-    first = false;
+    fragments.push_back({{"triangle", n.cut.id}, {"vertices", vertices}});
   }
-  if (cull && json)
-    std::cout << "], \"culling\": {\"triangle_nodes_culled\": " << culling.triangle_nodes_culled
-              << ", \"triangle_nodes_total\": " << culling.triangle_nodes_total
-              << ", \"tree_nodes_culled\": " << culling.tree_nodes_culled
-              << ", \"tree_nodes_total\": " << culling.tree_nodes_total << "}}\n";
-  else if (cull)
+  if (json) {
+    Json out = {{"fragments", fragments}};
+    if (cull)
+      out["culling"] = {{"triangle_nodes_culled", culling.triangle_nodes_culled},
+                        {"triangle_nodes_total", culling.triangle_nodes_total},
+                        {"tree_nodes_culled", culling.tree_nodes_culled},
+                        {"tree_nodes_total", culling.tree_nodes_total}};
+    std::cout << json_line(out) << "\n";
+    return 0;
+  }
+  for (const Json& f : fragments) {
+    std::cout << "triangle " << f["triangle"] << ":";
+    for (const Json& xyz : f["vertices"])
+      std::cout << " (" << xyz[0].get<std::string>() << " " << xyz[1].get<std::string>() << " "
+                << xyz[2].get<std::string>() << ")";
+    std::cout << "\n";
+  }
+  if (cull)
     std::cout << "culled: " << culling.triangle_nodes_culled << " of " << culling.triangle_nodes_total
               << " triangle nodes, " << culling.tree_nodes_culled << " of " << culling.tree_nodes_total
               << " tree nodes\n";
-  else
-    std::cout << (json ? "]}\n" : "");
   return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "json_out.hpp"
 #include "report.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
@@ -96,19 +97,20 @@ std::pair<std::string, std::string> interval(const K& k, const typename K::Time&
   return {k.to_string(t), k.to_string(t)};
 }
 
-// The fields of a motion change, in JSON, without braces.
+// A motion change as JSON; the motions keep the scene writer's layout.
 template <class K>
-std::string motion_change_fields(const K& k, const kinetic::Motion_change<typename K::Time>& c) {
-  std::string objects, motions;
-  for (std::size_t i = 0; i < c.objects.size(); ++i) {
-    objects += (i ? ", " : "") + std::to_string(c.objects[i]);
-    motions += (i ? ", " : "") + scene::write_motion(c.motions[i]);
-  }
-  return "\"time\": " + json_string(c.time.get_str()) + ", \"approx\": " + json_string(approx(c.time.get_d())) +
-         ", \"collision\": " + json_string(k.to_string(c.collision)) +
-         ", \"collision_approx\": " + json_string(approx(k.to_double(c.collision))) + ", \"objects\": [" + objects +
-         "], \"motions\": [" + motions + "], \"batches_before\": " + std::to_string(c.batches_before) +
-         ", \"tree_changed\": " + (c.tree_changed ? "true" : "false") + ", \"contact\": " + json_string(c.contact);
+Json motion_change_json(const K& k, const kinetic::Motion_change<typename K::Time>& c) {
+  Json motions = Json::array();
+  for (const auto& m : c.motions) motions.push_back(verbatim(scene::write_motion(m)));
+  return {{"time", c.time.get_str()},
+          {"approx", approx(c.time.get_d())},
+          {"collision", k.to_string(c.collision)},
+          {"collision_approx", approx(k.to_double(c.collision))},
+          {"objects", c.objects},
+          {"motions", motions},
+          {"batches_before", c.batches_before},
+          {"tree_changed", c.tree_changed},
+          {"contact", c.contact}};
 }
 
 // JSON Lines, one per certificate failure and one per motion change, in the
@@ -119,28 +121,25 @@ std::string trace_lines(const K& k, const kinetic::Simulation<typename K::Time>&
   kinetic::in_run_order(
       sim,
       [&](std::size_t c) {
-        out += "{\"motion_change\": " + std::to_string(c) + ", " + motion_change_fields(k, sim.motion_changes[c]) + "}\n";
+        Json line = {{"motion_change", c}};
+        line.update(motion_change_json(k, sim.motion_changes[c]));
+        out += json_line(line) + "\n";
       },
       [&](std::size_t b) {
         const auto& e = sim.batches[b];
         const auto [lo, hi] = interval(k, e.time);
-        const std::string head = "{\"batch\": " + std::to_string(b) + ", \"time\": " + json_string(k.to_string(e.time)) +
-                                 ", \"interval\": [" + json_string(lo) + ", " + json_string(hi) +
-                                 "], \"approx\": " + json_string(approx(k.to_double(e.time)));
         for (const auto& f : e.failing)
-          out += head + ", \"certificate\": " + json_string(kinetic::to_string(f.type)) +
-                 ", \"nodes\": " + json_string(kinetic::features(f)) + "}\n";
+          out += json_line({{"batch", b},
+                            {"time", k.to_string(e.time)},
+                            {"interval", Json::array({lo, hi})},
+                            {"approx", approx(k.to_double(e.time))},
+                            {"certificate", kinetic::to_string(f.type)},
+                            {"nodes", kinetic::features(f)}}) +
+                 "\n";
       });
   return out;
 }
 
-std::string by_type_json(const kinetic::Type_counts& counts) {
-  std::string out = "{";
-  for (std::size_t i = 0; i < counts.size(); ++i)
-    out += (i ? ", " : "") + json_string(kinetic::to_string(static_cast<kinetic::Certificate_type>(i))) + ": " +
-           std::to_string(counts[i]);
-  return out + "}";
-}
 std::string by_type_text(const kinetic::Type_counts& counts) {
   std::string out;
   std::size_t total = 0;
@@ -189,42 +188,59 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const Recomputed recomputed = certificates_recomputed(sim);
   const std::size_t collisions = sim.motion_changes.size() + (sim.collision ? 1 : 0);
   if (json) {
-    std::cout << "{\"kernel\": " << json_string(kernel_label(k)) << ", \"certificate_set\": " << json_string(set)
-              << ", \"queue\": " << json_string(queue) << ", \"batch_list\": [";
-    for (std::size_t i = 0; i < sim.batches.size(); ++i) {
-      const auto& e = sim.batches[i];
-      std::cout << (i ? ", " : "") << "{\"time\": " << json_string(k.to_string(e.time))
-                << ", \"approx\": " << json_string(approx(k.to_double(e.time))) << ", \"failing\": " << e.failures()
-                << ", \"certificates\": " << e.certificates << ", \"changed\": " << (e.changed ? "true" : "false")
-                << ", \"nodes_touched\": " << e.nodes_touched << ", \"nodes_recomputed\": " << e.nodes_recomputed
-                << ", \"certificates_recomputed\": " << e.certificates_recomputed << "}";
-    }
-    std::cout << "], \"motion_changes\": [";
-    for (std::size_t i = 0; i < sim.motion_changes.size(); ++i)
-      std::cout << (i ? ", " : "") << "{" << motion_change_fields(k, sim.motion_changes[i]) << "}";
-    std::cout << "], \"update\": " << json_string(update) << ", \"nodes_touched\": "
-              << (o.update == kinetic::Update::local ? "{\"median\": " + fixed(touched.median, 1) + ", \"below_10_share\": " +
-                                                           fixed(touched.below_10_share, 3) + "}"
-                                                     : std::string("null"))
-              << ", \"certificates_recomputed\": {\"median\": " << fixed(recomputed.median, 1)
-              << ", \"nodes_median\": " << fixed(recomputed.nodes_median, 1) << ", \"total\": " << recomputed.total << "}"
-              << ", \"events\": " << sim.failures << ", \"batches\": " << sim.batches.size()
-              << ", \"simultaneous_batches\": " << sim.simultaneous_batches
-              << ", \"collisions\": " << collisions << ", \"stopped\": " << json_string(stop_name(sim.stopped))
-              << ", \"validation\": " << json_string(validation_name(o.validate)) << ", \"validations\": " << sim.validations
-              << ", \"validation_failures\": " << sim.validation_failures
-              << ", \"time_reached\": " << json_string(approx(k.to_double(sim.time_reached)))
-              << ", \"time_reached_exact\": " << json_string(k.to_string(sim.time_reached))
-              << ", \"structure_hash\": " << json_string(sim.structure_hash)
-              << ", \"certificates_by_type\": " << by_type_json(sim.initial_certificates)
-              << ", \"events_by_type\": " << by_type_json(sim.failures_by_type)
-              << ", \"construction_ms\": " << fixed(1000 * sim.construction_seconds, 3) << ", \"update_ms\": {\"average\": "
-              << fixed(u.average, 3) << ", \"max\": " << fixed(u.max, 3) << ", \"stddev\": " << fixed(u.stddev, 3)
-              << ", \"median\": " << fixed(u.median, 3) << ", \"tree_median\": " << fixed(u.tree_median, 3)
-              << "}, \"recovery\": " << recovery_json(sim.recovery)
-              << ", \"tree_update_share\": " << fixed(u.tree_share, 3)
-              << ", \"certificate_update_share\": " << fixed(u.certificate_share, 3)
-              << ", \"filter\": " << filter_json(k) << "}\n";
+    Json batches = Json::array();
+    for (const auto& e : sim.batches)
+      batches.push_back({{"time", k.to_string(e.time)},
+                         {"approx", approx(k.to_double(e.time))},
+                         {"failing", e.failures()},
+                         {"certificates", e.certificates},
+                         {"changed", e.changed},
+                         {"nodes_touched", e.nodes_touched},
+                         {"nodes_recomputed", e.nodes_recomputed},
+                         {"certificates_recomputed", e.certificates_recomputed}});
+    Json changes = Json::array();
+    for (const auto& c : sim.motion_changes) changes.push_back(motion_change_json(k, c));
+    const Json touched_json = o.update == kinetic::Update::local
+                                  ? Json{{"median", decimal(fixed(touched.median, 1))},
+                                         {"below_10_share", decimal(fixed(touched.below_10_share, 3))}}
+                                  : Json(nullptr);
+    const Json j = {
+        {"kernel", kernel_label(k)},
+        {"certificate_set", set},
+        {"queue", queue},
+        {"batch_list", batches},
+        {"motion_changes", changes},
+        {"update", update},
+        {"nodes_touched", touched_json},
+        {"certificates_recomputed",
+         {{"median", decimal(fixed(recomputed.median, 1))},
+          {"nodes_median", decimal(fixed(recomputed.nodes_median, 1))},
+          {"total", recomputed.total}}},
+        {"events", sim.failures},
+        {"batches", sim.batches.size()},
+        {"simultaneous_batches", sim.simultaneous_batches},
+        {"collisions", collisions},
+        {"stopped", stop_name(sim.stopped)},
+        {"validation", validation_name(o.validate)},
+        {"validations", sim.validations},
+        {"validation_failures", sim.validation_failures},
+        {"time_reached", approx(k.to_double(sim.time_reached))},
+        {"time_reached_exact", k.to_string(sim.time_reached)},
+        {"structure_hash", sim.structure_hash},
+        {"certificates_by_type", type_counts_json(sim.initial_certificates)},
+        {"events_by_type", type_counts_json(sim.failures_by_type)},
+        {"construction_ms", decimal(fixed(1000 * sim.construction_seconds, 3))},
+        {"update_ms",
+         {{"average", decimal(fixed(u.average, 3))},
+          {"max", decimal(fixed(u.max, 3))},
+          {"stddev", decimal(fixed(u.stddev, 3))},
+          {"median", decimal(fixed(u.median, 3))},
+          {"tree_median", decimal(fixed(u.tree_median, 3))}}},
+        {"recovery", recovery_json(sim.recovery)},
+        {"tree_update_share", decimal(fixed(u.tree_share, 3))},
+        {"certificate_update_share", decimal(fixed(u.certificate_share, 3))},
+        {"filter", filter_json(k)}};
+    std::cout << json_line(j) << "\n";
   } else {
     if (list)
       kinetic::in_run_order(

@@ -54,12 +54,6 @@ double log10_of(const mpq_class& q) {
   return mpfr_get_d(w.v, MPFR_RNDN);
 }
 
-std::string recovery_json(const kinetic::Recovery& r) {
-  return "{\"failed_builds\": " + std::to_string(r.failed_builds) + ", \"refires\": " +
-         std::to_string(r.refires) + ", \"stale_trees\": " + std::to_string(r.stale_trees) +
-         ", \"rebuilds\": " + std::to_string(r.rebuilds) + ", \"zones_skipped\": " + std::to_string(r.zones_skipped) + ", \"unrepaired\": " + std::to_string(r.unrepaired) + "}";
-}
-
 const char* stop_name(kinetic::Stop s) {
   switch (s) {
     case kinetic::Stop::events: return "events";
@@ -76,20 +70,6 @@ std::string recovery_text(const kinetic::Recovery& r) {
          std::to_string(r.stale_trees) + " stale trees; " +
          std::to_string(r.rebuilds) + " trees adopted (" + std::to_string(r.zones_skipped) + " past a rounding zone), " +
          std::to_string(r.unrepaired) + " left unrepaired";
-}
-
-std::string filter_json(const Exact_kernel& k) {
-  const Filter_statistics& s = k.statistics();
-  const Stage_counts& c = s.classify;
-  const long decided = c.filter + c.exact + c.after + c.perturbation;
-  auto pair = [](const Stage_counts& n) {
-    return "{\"filter\": " + std::to_string(n.filter) + ", \"exact\": " + std::to_string(n.exact) + "}";
-  };
-  return std::string("{\"on\": ") + (k.filtered() ? "true" : "false") + ", \"classify\": {\"filter\": " +
-         std::to_string(c.filter) + ", \"exact\": " + std::to_string(c.exact) + ", \"after\": " +
-         std::to_string(c.after) + ", \"perturbation\": " + std::to_string(c.perturbation) +
-         ", \"filter_share\": " + fixed(decided ? static_cast<double>(c.filter) / static_cast<double>(decided) : 0, 4) +
-         "}, \"sign_at\": " + pair(s.sign_at) + ", \"compare\": " + pair(s.compare) + "}";
 }
 
 }  // namespace kvd::cli

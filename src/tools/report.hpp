@@ -95,22 +95,10 @@ Recomputed certificates_recomputed(const kinetic::Simulation<Time>& sim) {
   return r;
 }
 
-// A floating-point run's recovery counts, as a JSON object and in words.
-std::string recovery_json(const kinetic::Recovery& r);
 // Why a run stopped, one word for JSON ("events", "limit", "exhausted",
 // "collision", "stuck").
 const char* stop_name(kinetic::Stop s);
+// A floating-point run's recovery counts, in words.
 std::string recovery_text(const kinetic::Recovery& r);
-
-// How often each stage of the exact kernel's filtered predicates decided,
-// as a JSON object: {"on": BOOL, "classify": {"filter", "exact", "after",
-// "perturbation", "filter_share"}, "sign_at": {"filter", "exact"},
-// "compare": {"filter", "exact"}}; null for the floating-point kernels.
-std::string filter_json(const Exact_kernel& k);
-template <class K>
-std::string filter_json(const K& k) {
-  if constexpr (std::is_same_v<K, Exact_kernel>) return filter_json(static_cast<const Exact_kernel&>(k));
-  else return "null";
-}
 
 }  // namespace kvd::cli
