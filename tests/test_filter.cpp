@@ -119,7 +119,8 @@ TEST_CASE("roots 2^-110 apart are told apart, and signs between them are exact",
   // +2^-111 t at the second.
   const P between = two - linear(0, two_to(-111));
   for (const auto& [r, want] : {std::pair{root(two, 1), -1}, std::pair{root(shifted, 1), 1}}) {
-    const auto s = both([&](const Exact_kernel& k) { return k.sign_at(between, r.detached()); });
+    const Exact_time at = r.detached();  // a lambda may not capture a structured binding in C++17
+    const auto s = both([&](const Exact_kernel& k) { return k.sign_at(between, at); });
     CHECK(s.filtered == want);
     CHECK(s.exact == want);
   }
