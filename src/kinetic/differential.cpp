@@ -1,10 +1,10 @@
 #include "kvd/kinetic/differential.hpp"
 
-#include <chrono>
 #include <map>
 
 #include "kvd/kernel/convert.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/kinetic/stopwatch.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::kinetic {
@@ -86,10 +86,6 @@ std::vector<std::optional<std::size_t>> match(const std::vector<Listed>& a, cons
   return out;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 template <class Time>
@@ -143,9 +139,9 @@ Exact_run run_exact(const scene::Scene& s, std::size_t events, const Progress& p
   o.max_events = events;
   o.progress = progress;
   o.validate = Validation::none;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   Exact_run run{simulate(Exact_kernel(), s, o)};
-  run.seconds = seconds_since(start);
+  run.seconds = watch.seconds();
   return run;
 }
 
@@ -161,9 +157,9 @@ Differential compare_with(const Exact_run& exact, const K& k, const scene::Scene
   const Simulation<Exact_time>& x = exact.sim;
   if (x.stopped == Stop::events || x.stopped == Stop::collision) o.until = x.time_reached.upper();
   else o.until = x.limit;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const auto sim = simulate(k, s, o);
-  const double seconds = seconds_since(start);
+  const double seconds = watch.seconds();
   Differential d = compare_runs(exact.sim, sim);
   d.inexact_stopped = sim.stopped;
   d.seconds_exact = exact.seconds;
