@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "kernels.hpp"
+#include "kvd/detail/tree/digest.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
@@ -47,12 +48,20 @@ TEST_CASE("a single triangle gives the hand-checked tree", "[build]") {
   CHECK(st.e_nodes == 4);
   CHECK(st.t_nodes == 2);
   CHECK(st.height == 6);
-  // The canonical serialisation, and its SHA-256 as coreutils' sha256sum
-  // computes it (an implementation independent of ours).
+  // The canonical serialisation, and the structure hash over it node by
+  // node (tree/compare.hpp), as Python's hashlib computes it from the
+  // nine node texts below (an implementation independent of ours).
   CHECK(tree::canonical_serialisation(t) ==
         "P0:SV(v0)[][P1:SV(v1)[E0:SV(v0),SV(v1)[][E2:SV(v0),SV(e2,P1)[][T0:SV(v0),SV(v1),SV(e2,P1)[][]]]]"
         "[P2:SV(v2)[E1:SV(v1),SV(v2)[][E2:SV(v2),SV(e2,P1)[][T0:SV(v1),SV(v2),SV(e2,P1)[][]]]][]]]");
-  CHECK(tree::structure_hash(t) == "ee01ccff09824c143347fbe23e841fb9d4b65ae6c2168339ca4d0a5f770f6f48");
+  CHECK(tree::structure_hash(t) == "d4c5de78b1b276d7f7ef8803cbeb213c0ac1ec639956ec29539c546cb5d8f706");
+  // The same from the definition H(n) = SHA256(TEXT(n) "[" H(left) "][" H(right) "]").
+  const auto h = [](const std::string& text, const std::string& l = "", const std::string& r = "") {
+    return tree::sha256_hex(text + "[" + l + "][" + r + "]");
+  };
+  const std::string right = h("P2:SV(v2)", h("E1:SV(v1),SV(v2)", "", h("E2:SV(v2),SV(e2,P1)", "", h("T0:SV(v1),SV(v2),SV(e2,P1)"))));
+  const std::string left = h("E0:SV(v0),SV(v1)", "", h("E2:SV(v0),SV(e2,P1)", "", h("T0:SV(v0),SV(v1),SV(e2,P1)")));
+  CHECK(tree::structure_hash(t) == h("P0:SV(v0)", "", h("P1:SV(v1)", left, right)));
 }
 
 TEST_CASE("the single triangle with reversed orientation gives the hand-checked tree", "[build]") {

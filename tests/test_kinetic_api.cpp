@@ -41,6 +41,8 @@ TEMPLATE_TEST_CASE("stepping a Kinetic_kvd gives the batches, trees and stops of
       REQUIRE(i < whole.batches.size());
       same_batch(k, *b, whole.batches[i]);
       CHECK(stepped.structure_hash() == b->structure);
+      // Kept along the changed paths: the hash of the whole tree.
+      CHECK(stepped.structure_hash() == kvd::tree::structure_hash(stepped.tree()));
       ++i;
     }
     CHECK(i == whole.batches.size());
@@ -53,6 +55,30 @@ TEMPLATE_TEST_CASE("stepping a Kinetic_kvd gives the batches, trees and stops of
     CHECK(r.motion_changes.size() == whole.motion_changes.size());
     CHECK(r.structure_hash == whole.structure_hash);
     CHECK(k.to_string(r.time_reached) == k.to_string(whole.time_reached));
+  }
+}
+
+TEST_CASE("the structure hash kept along changed paths is the whole tree's after every batch", "[api]") {
+  const kvd::Exact_kernel k;
+  for (const char* name : {"random-20.json", "rotor.json", "cycle3.json", "collisions.json", "uniform-density-50.json",
+                           "uniform-scale-100.json", "stiff/tangential.json", "stiff/simultaneous.json"}) {
+    CAPTURE(name);
+    const auto s = bundled(name);
+    kvd::kinetic::Options o;
+    o.max_events = 40;
+    kvd::Kinetic_kvd<kvd::Exact_kernel> stepped(k, s, o);
+    kvd::tree::Kvd_tree before = stepped.tree();
+    std::size_t changes = 0;
+    while (const auto* b = stepped.advance()) {
+      CHECK(stepped.structure_hash() == kvd::tree::structure_hash(stepped.tree()));
+      // Whether the batch changed the tree, node for node (a motion change
+      // in the same step changes the tree before the batch).
+      const std::size_t now_changes = stepped.record().motion_changes.size();
+      if (now_changes == changes) CHECK(b->changed == kvd::tree::first_difference(before, stepped.tree()).has_value());
+      changes = now_changes;
+      before = stepped.tree();
+    }
+    CHECK(stepped.record().valid());
   }
 }
 

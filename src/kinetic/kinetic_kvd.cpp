@@ -69,7 +69,7 @@ const tree::Kvd_tree& Kinetic_kvd<K>::tree() const {
 
 template <class K>
 std::string Kinetic_kvd<K>::structure_hash() const {
-  return tree::structure_hash(sim_->tree());
+  return sim_->structure_hash();
 }
 
 template <class K>

@@ -95,16 +95,20 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& sp
   // Lowest priority first: a node's parent is never dragged before it.
   std::sort(held.begin(), held.end(), [](const Held& a, const Held& b) { return a.priority > b.priority; });
   tree::Tree_editor<K> editor(t, split);
+  std::vector<int> changed;
   for (const Held& h : held) {
     const int replacement = editor.drag(h.node);
     if (h.parent < 0) t.root = replacement;
     else if (h.right) t.nodes[static_cast<std::size_t>(h.parent)].right = replacement;
     else t.nodes[static_cast<std::size_t>(h.parent)].left = replacement;
+    if (h.parent >= 0) changed.push_back(h.parent);
   }
   std::vector<SP> order(moving.begin(), moving.end());
   tree::sort_by_priority(s, order);
   for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
-  return {moving.size(), editor.touched()};
+  const std::vector<int> touched = editor.touched_nodes();
+  changed.insert(changed.end(), touched.begin(), touched.end());
+  return {moving.size(), touched.size(), std::move(changed)};
 }
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \

@@ -12,11 +12,14 @@ template <class K>
 typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
                                                               const tree::Kvd_tree& t, const typename K::Time& now,
                                                               const std::set<Certificate_key>& failed, Work& work) {
-  const auto holds_failed = [&](const std::vector<Certificate<Poly>>& certs) {
-    return !failed.empty() &&
-           std::ranges::any_of(certs, [&](const auto& cert) { return failed.contains(cert.key); });
-  };
   records_.resize(std::max(records_.size(), t.nodes.size()));
+  // The slots whose record holds a failed certificate, from the holders of
+  // the failed keys (records are read below only as they were on entry).
+  std::vector<bool> failed_slot(records_.size());
+  for (const Certificate_key& key : failed)
+    if (const auto it = holders_.find(key); it != holders_.end())
+      for (int slot : it->second) failed_slot[static_cast<std::size_t>(slot)] = true;
+  const auto holds_failed = [&](std::size_t slot) { return failed_slot[slot]; };
   // 1. Pre-order: the nodes whose slot holds their key keep their record;
   // the others are pending, with their key and ancestors.
   struct Pending {
@@ -43,7 +46,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     Record& r = records_[slot];
     int children;
     if (!remake_ && r.used && r.key.path == v.path && r.key.cut == n.cut &&
-        (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(r.certificates)) {
+        (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(slot)) {
       in_place[slot] = true;
       children = r.children_path;
     } else {
@@ -78,7 +81,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const auto old = where_.find(pending[p].key);
     const auto from = old == where_.end() ? records_.size() : static_cast<std::size_t>(old->second);
-    if (!remake_ && from < records_.size() && !in_place[from] && !given[from] && !holds_failed(records_[from].certificates)) {
+    if (!remake_ && from < records_.size() && !in_place[from] && !given[from] && !holds_failed(from)) {
       given[from] = true;
       certs[p] = std::move(records_[from].certificates);
     } else {

@@ -24,6 +24,7 @@
 #include "kvd/detail/kinetic/x_collide.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/detail/tree/subtree_hashes.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/tree/compare.hpp"
 
@@ -51,7 +52,7 @@ public:
     const Stopwatch watch;
     Tree_after first = build_at(now_);
     if (!first.tree) throw tree::Build_error(first.meeting.error);
-    current_ = std::move(*first.tree);
+    take(std::move(first));
     make_certificates();
     sim_.construction_seconds = watch.seconds();
     in_force_.for_each([&](const auto& cert) { ++sim_.initial_certificates[static_cast<std::size_t>(cert.key.type)]; });
@@ -77,7 +78,7 @@ public:
     // certified the tree in force up to the limit.
     const bool to_limit = stopped_ && (sim_.stopped == Stop::limit || sim_.stopped == Stop::exhausted);
     sim_.time_reached = to_limit && limit_ ? *limit_ : now_;
-    sim_.structure_hash = tree::structure_hash(current_);
+    sim_.structure_hash = hashes_.root();
     return sim_;
   }
   // A flight-plan change: `object` moves by `motion` from the rational
@@ -132,6 +133,8 @@ public:
     return next;
   }
   const tree::Kvd_tree& tree() const { return current_; }
+  // Of the tree in force, kept up to date along the paths each update changed.
+  const std::string& structure_hash() const { return hashes_.root(); }
   const predicates::Classifier<K>& classifier() const { return builder_.classifier(); }
   const scene::Scene& scene() const { return scene_; }
   std::vector<Certificate<typename K::Poly>> certificates() const {
@@ -196,13 +199,17 @@ private:
       now_ = *next;
       return false;
     }
-    batch.changed = tree::first_difference(current_, *after.tree).has_value();
     batch.tree_seconds = tree_watch.seconds();
     sim_.failures += batch.failures();
     sim_.simultaneous_batches += batch.failures() >= 2;
     for (const Failure& f : batch.failing) ++sim_.failures_by_type[static_cast<std::size_t>(f.type)];
     validator_.leaving(now_, std::move(current_));
-    current_ = std::move(*after.tree);
+    const std::string before = hashes_.root();
+    const Stopwatch record_watch;
+    take(std::move(after));
+    batch.record_seconds = record_watch.seconds();
+    // Equal structure hashes: an equal canonical serialisation, node for node.
+    batch.changed = hashes_.root() != before;
     now_ = std::move(at);
     if (observer_) observer_->batch(batch, false);
     const Stopwatch cert_watch;
@@ -222,9 +229,7 @@ private:
       }
     }
     batch.certificate_seconds = cert_watch.seconds();
-    const Stopwatch record_watch;
-    batch.structure = tree::structure_hash(current_);
-    batch.record_seconds = record_watch.seconds();
+    batch.structure = hashes_.root();
     sim_.batches.push_back(std::move(batch));
     if (o_.progress) o_.progress(sim_.batches.size(), sim_.failures);
     return true;
@@ -244,13 +249,13 @@ private:
     for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, in_force_[id]));
     tree::Kvd_tree t = current_;
     auto updated = builder_.update(t, at, moving);
-    if (const Update_cost* cost = std::get_if<Update_cost>(&updated)) {
+    if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
       batch.nodes_touched = cost->nodes_touched;
-      return {std::move(t), {}};
+      return {std::move(t), {}, std::move(cost->changed)};
     }
     if constexpr (floating) return build_at(at);
-    else return {std::nullopt, std::get<Meeting>(std::move(updated))};
+    else return {std::nullopt, std::get<Meeting>(std::move(updated)), std::nullopt};
   }
 
   // The tree valid just after `at`, or the meeting there. A floating-point
@@ -333,7 +338,7 @@ private:
   // validation, or a later step) replaces the tree in force, at its instant.
   void adopt(tree::Kvd_tree t, Time at) {
     ++sim_.recovery.rebuilds;
-    current_ = std::move(t);
+    take({std::move(t), {}, std::nullopt});
     now_ = std::move(at);
     make_certificates();
   }
@@ -365,9 +370,17 @@ private:
   std::variant<bool, Meeting> rebuild_in_force(const Time& t) {
     Tree_after after = builder_.build(t);
     if (!after.tree) return std::move(after.meeting);
-    const bool changed = tree::first_difference(current_, *after.tree).has_value();
+    const std::string before = hashes_.root();
+    take(std::move(after));
+    return hashes_.root() != before;
+  }
+
+  // `after` becomes the tree in force, its structure hash updated along
+  // the paths a local update changed, or made afresh for a build.
+  void take(Tree_after after) {
     current_ = std::move(*after.tree);
-    return changed;
+    if (after.edited) hashes_.update(current_, *after.edited);
+    else hashes_.reset(current_);
   }
 
   const K& k_;
@@ -383,6 +396,7 @@ private:
   Time now_;
   std::optional<Time> limit_;
   tree::Kvd_tree current_;
+  tree::Subtree_hashes hashes_;  // of current_
   In_force<K> in_force_;
   Reduced_upkeep<K> upkeep_;
   Root_cache<K> roots_;

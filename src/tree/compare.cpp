@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "kvd/detail/tree/digest.hpp"
+#include "kvd/detail/tree/subtree_hashes.hpp"
 
 namespace kvd::tree {
 
@@ -19,7 +20,9 @@ std::vector<Symbolic_vertex> canonical_vertices(const Fragment& f) {
   return std::get<Triangle_fragment>(c).corners;
 }
 
-std::string text(const Node& n) {
+}  // namespace
+
+std::string canonical_text(const Node& n) {
   const char* kind = n.cut.kind == Symbolic_plane::Kind::P ? "P" : n.cut.kind == Symbolic_plane::Kind::E ? "E" : "T";
   std::string r = kind + std::to_string(n.cut.id) + ":";
   bool first = true;
@@ -29,8 +32,6 @@ std::string text(const Node& n) {
   }
   return r;
 }
-
-}  // namespace
 
 Fragment canonical(Fragment f) {
   if (auto* e = std::get_if<Edge_fragment>(&f)) {
@@ -56,7 +57,7 @@ std::string canonical_serialisation(const Kvd_tree& t) {
       continue;
     }
     const Node& n = t.nodes[static_cast<std::size_t>(std::get<int>(item))];
-    out += text(n);
+    out += canonical_text(n);
     // Pushed in reverse: "[" left "][" right "]".
     stack.emplace_back("]");
     if (n.right >= 0) stack.emplace_back(n.right);
@@ -67,7 +68,11 @@ std::string canonical_serialisation(const Kvd_tree& t) {
   return out;
 }
 
-std::string structure_hash(const Kvd_tree& t) { return sha256_hex(canonical_serialisation(t)); }
+std::string node_hash(const Node& n, const std::string& left, const std::string& right) {
+  return sha256_hex(canonical_text(n) + "[" + left + "][" + right + "]");
+}
+
+std::string structure_hash(const Kvd_tree& t) { return Subtree_hashes(t).root(); }
 
 std::optional<std::string> first_difference(const Kvd_tree& a, const Kvd_tree& b) {
   std::vector<std::tuple<int, int, std::string>> stack{{a.root, b.root, "root"}};
@@ -77,7 +82,7 @@ std::optional<std::string> first_difference(const Kvd_tree& a, const Kvd_tree& b
     if (i < 0 && j < 0) continue;
     if (i < 0 || j < 0)
       return "at " + path + ": a subtree is present only in the " + (i < 0 ? "second" : "first") + " tree (" +
-             text((i < 0 ? b : a).nodes[static_cast<std::size_t>(i < 0 ? j : i)]) + ")";
+             canonical_text((i < 0 ? b : a).nodes[static_cast<std::size_t>(i < 0 ? j : i)]) + ")";
     const Node& m = a.nodes[static_cast<std::size_t>(i)];
     const Node& n = b.nodes[static_cast<std::size_t>(j)];
     if (m.cut != n.cut)

@@ -92,10 +92,11 @@ void Tree_editor<K>::release(int n) {
 }
 
 template <class K>
-std::size_t Tree_editor<K>::touched() const {
+std::vector<int> Tree_editor<K>::touched_nodes() const {
   std::vector<int> t = touched_;
   std::sort(t.begin(), t.end());
-  return static_cast<std::size_t>(std::unique(t.begin(), t.end()) - t.begin());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
 }
 
 // A node is split when its piece crosses the plane; otherwise it stays on

@@ -69,8 +69,8 @@ struct Batch {
   std::size_t nodes_touched = 0;  // --update local: the nodes the update touched
   std::size_t nodes_recomputed = 0;         // nodes that made their certificates again (all, with the full set)
   std::size_t certificates_recomputed = 0;  // the certificates they made
-  double tree_seconds = 0;         // updating the tree, and telling whether it changed
-  double record_seconds = 0;       // the structure hash of the tree after (Batch::structure)
+  double tree_seconds = 0;         // updating the tree
+  double record_seconds = 0;       // its structure hash, along the changed paths (tells `changed`)
   double certificate_seconds = 0;  // making the certificates, their failure times and the queue
   std::size_t failures() const { return failing.size(); }
 };

@@ -5,13 +5,19 @@
 // fragment's two vertices in increasing order, a triangle fragment's corners
 // starting from the smallest and keeping their cyclic orientation.
 //
-// The canonical serialisation, which the structure hash digests, is the
-// pre-order walk S(n) = TEXT(n) "[" S(left) "][" S(right) "]", with S of an
-// empty subtree the empty string, and TEXT(n) = KIND FEATURE ":" the
-// fragment's canonical vertices joined by ",", e.g. "E2:SV(v0),SV(e2,P1)".
-// KIND is P, E or T; vertices are written as symbolic::to_string writes them.
-// The structure hash is the lowercase hex SHA-256 of that text (UTF-8,
-// no terminator): the same for every kernel and platform.
+// The canonical serialisation is the pre-order walk
+// S(n) = TEXT(n) "[" S(left) "][" S(right) "]", with S of an empty subtree
+// the empty string, and TEXT(n) = KIND FEATURE ":" the fragment's canonical
+// vertices joined by ",", e.g. "E2:SV(v0),SV(e2,P1)". KIND is P, E or T;
+// vertices are written as symbolic::to_string writes them.
+//
+// The structure hash digests the same text subtree by subtree (a Merkle
+// hash), so that a kinetic run keeps it up to date along the paths an
+// update changed (detail/tree/subtree_hashes.hpp):
+// H(n) = SHA256(TEXT(n) "[" H(left) "][" H(right) "]"), with H of an empty
+// subtree the empty string and each H written as lowercase hex (UTF-8, no
+// terminator). The structure hash is H(root), and SHA256("") for a tree
+// with no node: the same for every kernel and platform.
 #pragma once
 
 #include <optional>
@@ -26,6 +32,9 @@ namespace kvd::tree {
 Fragment canonical(Fragment f);
 
 std::string canonical_serialisation(const Kvd_tree& t);
+// TEXT(n), and H(n) from the hashes of n's subtrees.
+std::string canonical_text(const Node& n);
+std::string node_hash(const Node& n, const std::string& left, const std::string& right);
 std::string structure_hash(const Kvd_tree& t);
 // The first difference in pre-order, in words ("at root/+/-: node kinds
 // differ: P(3) against E(2)"), or none when the trees are equal.

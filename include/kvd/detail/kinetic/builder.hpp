@@ -31,6 +31,9 @@ struct Meeting {
 struct Tree_after {
   std::optional<tree::Kvd_tree> tree;
   Meeting meeting;  // when there is no tree
+  // A local update's tree: the nodes it changed (Update_cost::changed);
+  // none for a build.
+  std::optional<std::vector<int>> edited;
 };
 
 template <class K>
@@ -51,9 +54,9 @@ public:
   Tree_after build(const Time& t) {
     evaluated_.clear();
     try {
-      return {tree::build(*c_, t, full_ ? &evaluated_ : nullptr), {}};
+      return {tree::build(*c_, t, full_ ? &evaluated_ : nullptr), {}, std::nullopt};
     } catch (const tree::Build_error& e) {
-      return {std::nullopt, meeting(e)};
+      return {std::nullopt, meeting(e), std::nullopt};
     }
   }
   const tree::Evaluated& evaluated() const { return evaluated_; }

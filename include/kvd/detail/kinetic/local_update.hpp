@@ -43,6 +43,9 @@ std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const Cer
 struct Update_cost {
   std::size_t sites = 0;          // moving sites
   std::size_t nodes_touched = 0;  // distinct nodes re-cut, relinked, created or removed (Tree_editor::touched)
+  // Those nodes, with the parents given a new child in place of a dragged
+  // node: what the structure hash must hash again (Subtree_hashes::update).
+  std::vector<int> changed;
 };
 
 template <class K>

@@ -55,7 +55,9 @@ public:
   // Subtree n without node n.
   int drag(int n);
 
-  std::size_t touched() const;
+  // The distinct nodes touched, increasing; touched() counts them.
+  std::vector<int> touched_nodes() const;
+  std::size_t touched() const { return touched_nodes().size(); }
 
 private:
   Node& node(int i) { return t_.nodes[static_cast<std::size_t>(i)]; }

@@ -1,0 +1,71 @@
+#include "kvd/detail/tree/subtree_hashes.hpp"
+
+#include <cstddef>
+#include <utility>
+
+#include "kvd/detail/tree/digest.hpp"
+#include "kvd/tree/compare.hpp"
+
+namespace kvd::tree {
+
+namespace {
+
+std::size_t at(int i) { return static_cast<std::size_t>(i); }
+
+}  // namespace
+
+void Subtree_hashes::reset(const Kvd_tree& t) {
+  hash_.assign(t.nodes.size(), {});
+  parent_.assign(t.nodes.size(), -1);
+  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+    const Node& n = t.nodes[i];
+    for (int c : {n.left, n.right})
+      if (c >= 0) parent_[at(c)] = static_cast<int>(i);
+  }
+  // Every slot is marked; released ones are never reached from the root.
+  rehash(t, t.root, std::vector<char>(t.nodes.size(), 1));
+}
+
+void Subtree_hashes::update(const Kvd_tree& t, const std::vector<int>& changed) {
+  hash_.resize(t.nodes.size());
+  parent_.resize(t.nodes.size(), -1);
+  std::vector<char> released(t.nodes.size(), 0);
+  for (int f : t.free_nodes) released[at(f)] = 1;
+  // A node whose parent changed hangs under a relinked or new node: the
+  // changed nodes give every new parent link.
+  for (int n : changed) {
+    if (released[at(n)]) continue;
+    for (int c : {t.nodes[at(n)].left, t.nodes[at(n)].right})
+      if (c >= 0) parent_[at(c)] = n;
+  }
+  if (t.root >= 0) parent_[at(t.root)] = -1;
+  std::vector<char> stale(t.nodes.size(), 0);
+  for (int n : changed)
+    for (int i = n; i >= 0 && !released[at(i)] && !stale[at(i)]; i = parent_[at(i)]) stale[at(i)] = 1;
+  rehash(t, t.root, stale);
+}
+
+void Subtree_hashes::rehash(const Kvd_tree& t, int from, const std::vector<char>& stale) {
+  // Iterative post-order through the stale nodes only: the stale set holds
+  // every ancestor of its nodes, so each is reached from the root.
+  std::vector<std::pair<int, bool>> stack;
+  if (from >= 0 && stale[at(from)]) stack.emplace_back(from, false);
+  while (!stack.empty()) {
+    auto [n, children_done] = stack.back();
+    stack.pop_back();
+    const Node& node = t.nodes[at(n)];
+    if (!children_done) {
+      stack.emplace_back(n, true);
+      for (int c : {node.right, node.left})
+        if (c >= 0 && stale[at(c)]) stack.emplace_back(c, false);
+      continue;
+    }
+    hash_[at(n)] = node_hash(node, node.left >= 0 ? hash_[at(node.left)] : std::string(),
+                             node.right >= 0 ? hash_[at(node.right)] : std::string());
+  }
+  root_ = t.root >= 0 ? hash_[at(t.root)] : sha256_hex("");
+}
+
+const std::string& Subtree_hashes::root() const { return root_; }
+
+}  // namespace kvd::tree
