@@ -73,7 +73,8 @@ std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failin
 }
 
 template <class K>
-Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split, const std::set<SP>& moving) {
+Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split, const std::set<SP>& moving,
+                         tree::Tree_journal* journal) {
   const scene::Scene& s = split.classifier().motion().scene();
   // The nodes of moving sites, with where each hangs.
   struct Held {
@@ -94,10 +95,11 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& sp
   }
   // Lowest priority first: a node's parent is never dragged before it.
   std::sort(held.begin(), held.end(), [](const Held& a, const Held& b) { return a.priority > b.priority; });
-  tree::Tree_editor<K> editor(t, split);
+  tree::Tree_editor<K> editor(t, split, journal);
   std::vector<int> changed;
   for (const Held& h : held) {
     const int replacement = editor.drag(h.node);
+    if (h.parent >= 0 && journal) journal->save(h.parent);
     if (h.parent < 0) t.root = replacement;
     else if (h.right) t.nodes[static_cast<std::size_t>(h.parent)].right = replacement;
     else t.nodes[static_cast<std::size_t>(h.parent)].left = replacement;
@@ -113,7 +115,8 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& sp
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \
   template std::set<SP> moving_sites<K::Poly>(const scene::Scene&, const Certificate<K::Poly>&);            \
-  template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Fragment_splitter<K>&, const std::set<SP>&);
+  template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Fragment_splitter<K>&, const std::set<SP>&, \
+                                       tree::Tree_journal*);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_LOCAL_UPDATE)
 
 }  // namespace kvd::kinetic

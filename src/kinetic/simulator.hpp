@@ -203,7 +203,9 @@ private:
     sim_.failures += batch.failures();
     sim_.simultaneous_batches += batch.failures() >= 2;
     for (const Failure& f : batch.failing) ++sim_.failures_by_type[static_cast<std::size_t>(f.type)];
-    validator_.leaving(now_, std::move(current_));
+    // The tree that was in force: a build left it in current_; a local
+    // update edited it in place, and kept a copy only for validation.
+    validator_.leaving(now_, after.edited ? std::move(before_) : std::move(current_));
     const std::string before = hashes_.root();
     const Stopwatch record_watch;
     take(std::move(after));
@@ -241,18 +243,18 @@ private:
   // The full set is what a build evaluates: it always takes the rebuild.
   bool local() const { return o_.update == Update::local && !full(); }
 
-  // The tree in force changed by the local update of the batch failing at
-  // `at`. A floating-point kernel whose update fails repairs with the
+  // The tree in force changed in place by the local update of the batch
+  // failing at `at`, and moved into the result. A floating-point kernel whose update fails repairs with the
   // recovery's builds.
   Tree_after update_locally(Time& at, Batch<Time>& batch) {
     std::set<symbolic::Symbolic_plane> moving;
     for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, in_force_[id]));
-    tree::Kvd_tree t = current_;
-    auto updated = builder_.update(t, at, moving);
+    if (validator_.keeps_last()) before_ = current_;  // the update edits the tree in force
+    auto updated = builder_.update(current_, at, moving);
     if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
       batch.nodes_touched = cost->nodes_touched;
-      return {std::move(t), {}, std::move(cost->changed)};
+      return {std::move(current_), {}, std::move(cost->changed)};
     }
     if constexpr (floating) return build_at(at);
     else return {std::nullopt, std::get<Meeting>(std::move(updated)), std::nullopt};
@@ -397,6 +399,7 @@ private:
   std::optional<Time> limit_;
   tree::Kvd_tree current_;
   tree::Subtree_hashes hashes_;  // of current_
+  tree::Kvd_tree before_;        // current_ before a local update, when validation keeps it
   In_force<K> in_force_;
   Reduced_upkeep<K> upkeep_;
   Root_cache<K> roots_;

@@ -54,8 +54,14 @@ std::vector<SP> sites_in_priority_order(const scene::Scene& s) {
 }
 
 template <class K>
-Tree_editor<K>::Tree_editor(Kvd_tree& t, const Fragment_splitter<K>& split)
-    : t_(t), split_(split), s_(split.classifier().motion().scene()) {}
+Tree_editor<K>::Tree_editor(Kvd_tree& t, const Fragment_splitter<K>& split, Tree_journal* journal)
+    : t_(t), split_(split), s_(split.classifier().motion().scene()), journal_(journal) {}
+
+template <class K>
+Node& Tree_editor<K>::edit(int i) {
+  if (journal_) journal_->save(i);
+  return node(i);
+}
 
 template <class K>
 std::size_t Tree_editor<K>::priority(int n) const {
@@ -71,7 +77,7 @@ int Tree_editor<K>::make(Node n) {
   } else {
     i = t_.free_nodes.back();
     t_.free_nodes.pop_back();
-    node(i) = std::move(n);
+    edit(i) = std::move(n);
   }
   touched_.push_back(i);
   return i;
@@ -80,13 +86,15 @@ int Tree_editor<K>::make(Node n) {
 template <class K>
 void Tree_editor<K>::relink(int n, int left, int right) {
   if (node(n).left == left && node(n).right == right) return;
-  node(n).left = left, node(n).right = right;
+  Node& x = edit(n);
+  x.left = left, x.right = right;
   touched_.push_back(n);
 }
 
 template <class K>
 void Tree_editor<K>::release(int n) {
-  node(n).left = node(n).right = -1;
+  Node& x = edit(n);
+  x.left = x.right = -1;
   t_.free_nodes.push_back(n);
   touched_.push_back(n);
 }
@@ -110,7 +118,7 @@ std::pair<int, int> Tree_editor<K>::split_tree(int t, SP plane) {
   const auto [ln, lp] = split_tree(node(t).left, plane);
   const auto [rn, rp] = split_tree(node(t).right, plane);
   if (neg && pos) {
-    node(t).fragment = std::move(*neg);
+    edit(t).fragment = std::move(*neg);
     touched_.push_back(t);
     relink(t, ln, rn);
     return {t, make(Node{cut, std::move(*pos), lp, rp})};
@@ -128,7 +136,8 @@ int Tree_editor<K>::merge(int t1, int t2, SP between) {
   if (t1 < 0) return t2;
   if (t2 < 0) return t1;
   if (priority(t1) == priority(t2)) {  // one site, its two pieces meeting across `between`
-    node(t1).fragment = join(node(t1).fragment, node(t2).fragment, between, node(t1).cut);
+    Fragment joined = join(node(t1).fragment, node(t2).fragment, between, node(t1).cut);
+    edit(t1).fragment = std::move(joined);
     touched_.push_back(t1);
     const int l2 = node(t2).left, r2 = node(t2).right;
     release(t2);

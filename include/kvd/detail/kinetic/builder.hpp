@@ -14,6 +14,7 @@
 
 #include "kvd/detail/kinetic/collision.hpp"
 #include "kvd/detail/kinetic/local_update.hpp"
+#include "kvd/detail/tree/journal.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/predicates/classify.hpp"
 #include "kvd/tree/build.hpp"
@@ -31,8 +32,8 @@ struct Meeting {
 struct Tree_after {
   std::optional<tree::Kvd_tree> tree;
   Meeting meeting;  // when there is no tree
-  // A local update's tree: the nodes it changed (Update_cost::changed);
-  // none for a build.
+  // A local update's tree (the tree in force, edited in place and moved
+  // here): the nodes it changed (Update_cost::changed); none for a build.
   std::optional<std::vector<int>> edited;
 };
 
@@ -61,19 +62,23 @@ public:
   }
   const tree::Evaluated& evaluated() const { return evaluated_; }
 
-  // `t` made the tree just after `at` by the local update moving `moving`,
-  // with its cost; or the meeting that stops it. In a floating-point kernel
-  // rounding can also leave pieces that no longer fit together (a join that
-  // finds no shared side), given as a meeting of no object, which the
-  // caller repairs by a build; exact arithmetic cannot, so there it is a bug
-  // and the exception goes on.
+  // `t` made, in place, the tree just after `at` by the local update moving
+  // `moving`, with its cost; or the meeting that stops it, `t` then left
+  // exactly as it was (the update's edits are journalled and undone). In a
+  // floating-point kernel rounding can also leave pieces that no longer
+  // fit together (a join that finds no shared side), given as a meeting of
+  // no object, which the caller repairs by a build; exact arithmetic
+  // cannot, so there it is a bug and the exception goes on.
   std::variant<Update_cost, Meeting> update(tree::Kvd_tree& t, const Time& at,
                                             const std::set<symbolic::Symbolic_plane>& moving) const {
+    tree::Tree_journal journal(t);
     try {
-      return local_update(t, tree::Fragment_splitter<K>(*c_, at), moving);
+      return local_update(t, tree::Fragment_splitter<K>(*c_, at), moving, &journal);
     } catch (const tree::Build_error& e) {
+      journal.undo();
       return meeting(e);
     } catch (const std::logic_error& e) {
+      journal.undo();
       if constexpr (std::is_same_v<K, Exact_kernel>) throw;
       return Meeting{e.what(), {}};
     }

@@ -26,6 +26,7 @@
 #include "kvd/kinetic/certificate.hpp"
 #include "kvd/scene/scene.hpp"
 #include "kvd/detail/tree/fragment_split.hpp"
+#include "kvd/detail/tree/journal.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::kinetic {
@@ -48,8 +49,10 @@ struct Update_cost {
   std::vector<int> changed;
 };
 
+// With a journal, every node is saved there before its first change, so
+// that a failed update can be undone.
 template <class K>
 Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split,
-                         const std::set<symbolic::Symbolic_plane>& moving);
+                         const std::set<symbolic::Symbolic_plane>& moving, tree::Tree_journal* journal = nullptr);
 
 }  // namespace kvd::kinetic

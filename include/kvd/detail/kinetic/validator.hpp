@@ -67,6 +67,7 @@ public:
   // Validation::end checks only the last interval: the tree `t` in force
   // from `from` is leaving force (kept, in that mode), or the tree in force
   // now has new motions (the interval kept is forgotten).
+  bool keeps_last() const { return mode_ == Validation::end; }
   void leaving(const Time& from, tree::Kvd_tree t) {
     if (mode_ == Validation::end) last_.emplace(from, std::move(t));
   }

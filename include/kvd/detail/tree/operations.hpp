@@ -24,6 +24,7 @@
 
 #include "kvd/scene/scene.hpp"
 #include "kvd/detail/tree/fragment_split.hpp"
+#include "kvd/detail/tree/journal.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::tree {
@@ -43,7 +44,8 @@ std::vector<Symbolic_plane> sites_in_priority_order(const scene::Scene& s);
 template <class K>
 class Tree_editor {
 public:
-  Tree_editor(Kvd_tree& t, const Fragment_splitter<K>& split);
+  // With a journal, every node is saved there before its first change.
+  Tree_editor(Kvd_tree& t, const Fragment_splitter<K>& split, Tree_journal* journal = nullptr);
 
   // The trees on the negative and positive side of `plane`, the plane of a
   // site of higher priority than every node of subtree t.
@@ -61,6 +63,8 @@ public:
 
 private:
   Node& node(int i) { return t_.nodes[static_cast<std::size_t>(i)]; }
+  // Node i, about to be changed.
+  Node& edit(int i);
   std::size_t priority(int n) const;
   int make(Node n);
   void relink(int n, int left, int right);
@@ -70,6 +74,7 @@ private:
   Kvd_tree& t_;
   const Fragment_splitter<K>& split_;
   const scene::Scene& s_;
+  Tree_journal* journal_;
   std::vector<int> touched_;
 };
 
