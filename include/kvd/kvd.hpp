@@ -75,7 +75,8 @@ public:
 
   // The tree in force, read-only (valid on (now, next_event_time)).
   const tree::Kvd_tree& tree() const;
-  // Its structure hash (README: the canonical serialisation's SHA-256).
+  // Its structure hash (tree/compare.hpp: a Merkle hash of the canonical
+  // serialisation), kept up to date along the paths each batch changed.
   std::string structure_hash() const;
   // The certificates in force.
   std::vector<kinetic::Certificate<typename K::Poly>> certificates() const;

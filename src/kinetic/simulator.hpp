@@ -45,6 +45,10 @@ public:
     if (sim_.limit) limit_ = k.time(from_rational<FT>(*sim_.limit));
   }
 
+  // Its parts hold references to scene_, builder_ and sim_: not copied or moved.
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
   // The tree at the start, its certificates and the queue. Throws
   // tree::Build_error when the scene is not valid at its start (in a
   // floating-point kernel, nor just after it: build_at).
@@ -195,7 +199,7 @@ private:
       sim_.collision = "collision at t = " + k_.to_string(*next) + ": " + after.meeting.error + X_collide<K>::colliding(batch);
       sim_.stopped = Stop::collision;
       if (observer_) observer_->batch(batch, true);
-      validator_.leaving(now_, current_);  // current stays in force
+      if (validator_.keeps_last()) validator_.leaving(now_, current_);  // current stays in force
       now_ = *next;
       return false;
     }
@@ -256,6 +260,7 @@ private:
       batch.nodes_touched = cost->nodes_touched;
       return {std::move(current_), {}, std::move(cost->changed)};
     }
+    before_ = {};  // undone: the tree in force is current_ again
     if constexpr (floating) return build_at(at);
     else return {std::nullopt, std::get<Meeting>(std::move(updated)), std::nullopt};
   }

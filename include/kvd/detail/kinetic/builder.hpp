@@ -64,7 +64,8 @@ public:
 
   // `t` made, in place, the tree just after `at` by the local update moving
   // `moving`, with its cost; or the meeting that stops it, `t` then left
-  // exactly as it was (the update's edits are journalled and undone). In a
+  // exactly as it was (the update's edits are journalled and undone, as
+  // they are for any exception that goes on). In a
   // floating-point kernel rounding can also leave pieces that no longer
   // fit together (a join that finds no shared side), given as a meeting of
   // no object, which the caller repairs by a build; exact arithmetic
@@ -81,6 +82,9 @@ public:
       journal.undo();
       if constexpr (std::is_same_v<K, Exact_kernel>) throw;
       return Meeting{e.what(), {}};
+    } catch (...) {  // anything else (out of memory, say): undone, and passed on
+      journal.undo();
+      throw;
     }
   }
 
