@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace kvd::kinetic {
 
@@ -38,10 +40,10 @@ void Event_order_recorder::in_force(const Exact_time&, const std::vector<Certifi
   std::vector<std::size_t> active;
   // Certificates are numbered as they first appear, listed by their
   // features' text: the certificate file's order.
-  std::vector<const Certificate<Exact_kernel::Poly>*> listed;
-  for (const auto& c : certs) listed.push_back(&c);
-  std::ranges::stable_sort(listed, {}, [](const auto* c) { return features(c->key); });
-  for (const auto* c : listed)
+  std::vector<std::pair<std::string, const Certificate<Exact_kernel::Poly>*>> listed;  // text made once
+  for (const auto& c : certs) listed.emplace_back(features(c.key), &c);
+  std::ranges::stable_sort(listed, [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [text, c] : listed)
     for (const auto& q : c->polys) {
       // to_zpoly scales by a positive rational: still positive where in force.
       const std::size_t i = id(c->key, zpoly::to_zpoly(q));

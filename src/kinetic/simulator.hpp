@@ -210,12 +210,9 @@ private:
     // The tree that was in force: a build left it in current_; a local
     // update edited it in place, and kept a copy only for validation.
     validator_.leaving(now_, after.edited ? std::move(before_) : std::move(current_));
-    const std::string before = hashes_.root();
     const Stopwatch record_watch;
-    take(std::move(after));
+    batch.changed = take(std::move(after));
     batch.record_seconds = record_watch.seconds();
-    // Equal structure hashes: an equal canonical serialisation, node for node.
-    batch.changed = hashes_.root() != before;
     now_ = std::move(at);
     if (observer_) observer_->batch(batch, false);
     const Stopwatch cert_watch;
@@ -377,17 +374,19 @@ private:
   std::variant<bool, Meeting> rebuild_in_force(const Time& t) {
     Tree_after after = builder_.build(t);
     if (!after.tree) return std::move(after.meeting);
-    const std::string before = hashes_.root();
-    take(std::move(after));
-    return hashes_.root() != before;
+    return take(std::move(after));
   }
 
   // `after` becomes the tree in force, its structure hash updated along
-  // the paths a local update changed, or made afresh for a build.
-  void take(Tree_after after) {
+  // the paths a local update changed, or made afresh for a build. Whether
+  // the tree changed: equal structure hashes are an equal canonical
+  // serialisation, node for node.
+  bool take(Tree_after after) {
+    const std::string before = hashes_.root();
     current_ = std::move(*after.tree);
     if (after.edited) hashes_.update(current_, *after.edited);
     else hashes_.reset(current_);
+    return hashes_.root() != before;
   }
 
   const K& k_;
