@@ -14,6 +14,8 @@
 #include "kvd/tree/compare.hpp"
 #include "kvd/detail/tree/journal.hpp"
 #include "kvd/detail/tree/operations.hpp"
+#include "kvd/detail/tree/subtree_hashes.hpp"
+#include "kvd/detail/tree/tree_links.hpp"
 
 using namespace kvd;
 using SP = symbolic::Symbolic_plane;
@@ -26,7 +28,7 @@ scene::Scene load(const char* name) { return scene::load_scene(std::string(KVD_S
 template <class K>
 std::pair<tree::Kvd_tree, std::size_t> moved(const predicates::Classifier<K>& c, tree::Kvd_tree t,
                                              const typename K::Time& at, const std::set<SP>& moving) {
-  const auto cost = kinetic::local_update(t, tree::Fragment_splitter<K>(c, at), moving);
+  const auto cost = kinetic::local_update(t, tree::Tree_links(t), tree::Fragment_splitter<K>(c, at), moving);
   return {std::move(t), cost.nodes_touched};
 }
 
@@ -144,7 +146,8 @@ TEMPLATE_TEST_CASE("the journal undoes a local update exactly, node for node", "
     for (const SP& site : tree::sites_in_priority_order(s)) {
       CAPTURE(symbolic::to_string(site));
       tree::Tree_journal journal(t);
-      kinetic::local_update(t, tree::Fragment_splitter<TestType>(c, at), kinetic::sites_with(s, site), &journal);
+      kinetic::local_update(t, tree::Tree_links(t), tree::Fragment_splitter<TestType>(c, at), kinetic::sites_with(s, site),
+                            &journal);
       CHECK(!tree::first_difference(t, before));
       edited += !same();
       journal.undo();
@@ -152,6 +155,42 @@ TEMPLATE_TEST_CASE("the journal undoes a local update exactly, node for node", "
     }
     CHECK(edited > 0);  // the updates did move nodes between slots
   }
+}
+
+TEMPLATE_TEST_CASE("links and hashes kept from the changed nodes are the tree's after every local update", "[local]",
+                   KVD_ALL_KERNELS) {
+  // Every site of a scene with the sites it bounds dragged out and inserted
+  // again, one after the other (nodes move between slots, slots are
+  // released and recycled): the links and the per-subtree hashes updated
+  // from each update's changed nodes equal those made afresh from the tree.
+  std::size_t released = 0;
+  for (const char* name : {"random-20.json", "uniform-scale-25.json", "boxes.json"}) {
+    CAPTURE(name);
+    const scene::Scene s = load(name);
+    const TestType k;
+    const predicates::Classifier<TestType> c(k, s);
+    const auto at = k.time(typename TestType::FT(1));
+    tree::Kvd_tree t = tree::build(c, at);
+    tree::Tree_links links(t);
+    tree::Subtree_hashes hashes(t);
+    const auto sites = tree::sites_in_priority_order(s);
+    for (const SP& site : sites) {
+      CAPTURE(symbolic::to_string(site));
+      const auto cost = kinetic::local_update(t, links, tree::Fragment_splitter<TestType>(c, at), kinetic::sites_with(s, site));
+      links.update(t, cost.changed);
+      hashes.update(t, links, cost.changed);
+      const tree::Tree_links fresh(t);
+      for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+        const int n = static_cast<int>(i);
+        REQUIRE(links.live(n) == fresh.live(n));
+        if (fresh.live(n)) CHECK(links.parent(n) == fresh.parent(n));
+      }
+      for (const SP& other : sites) CHECK(links.holding(other) == fresh.holding(other));
+      CHECK(hashes.root() == tree::structure_hash(t));
+      released += t.free_nodes.size();
+    }
+  }
+  CHECK(released > 0);  // slots were released (and the index had to drop them)
 }
 
 TEST_CASE("split_tree and merge are inverse on a subtree", "[local]") {

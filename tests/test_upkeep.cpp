@@ -81,7 +81,9 @@ TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is ma
 
   kinetic::Reduced_upkeep<TestType> upkeep;
   typename kinetic::Reduced_upkeep<TestType>::Work first, again, refail;
-  const auto made = upkeep.update(c, t, now, {}, first);
+  const tree::Tree_links links(t);
+  const std::vector<int> untouched;  // no node edited: only failed ones are looked at
+  const auto made = upkeep.update(c, t, links, nullptr, now, {}, first);
   CHECK(first.nodes == n);
   CHECK(made.gone.empty());
   REQUIRE(made.changed.size() >= 20);
@@ -91,7 +93,7 @@ TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is ma
   for (const auto& cert : kinetic::reduced_certificates(c, t, now)) scratch.insert(cert.key);
   CHECK(all == scratch);
 
-  const auto kept = upkeep.update(c, t, now, {}, again);
+  const auto kept = upkeep.update(c, t, links, &untouched, now, {}, again);
   CHECK(again.nodes == 0);
   CHECK(again.certificates == 0);
   CHECK(kept.gone.empty());
@@ -109,7 +111,7 @@ TEMPLATE_TEST_CASE("a tree left alone keeps its certificates; a failed one is ma
       certificates += certs.size();
     }
   }
-  const auto after = upkeep.update(c, t, now, {failed}, refail);
+  const auto after = upkeep.update(c, t, links, &untouched, now, {failed}, refail);
   CHECK(holders >= 1);
   CHECK(refail.nodes == holders);
   CHECK(refail.certificates == certificates);
@@ -131,7 +133,7 @@ TEST_CASE("after the tree changes, exactly the nodes with a new key make their c
     typename kinetic::Reduced_upkeep<Exact_kernel>::Work work;
     const Exact_time t0(s.start);
     const tree::Kvd_tree before = tree::build(c, t0);
-    upkeep.update(c, before, t0, {}, work);
+    upkeep.update(c, before, tree::Tree_links(before), nullptr, t0, {}, work);
     std::set<Explicit_key> keys;
     for (const auto& v : nodes_of(before)) keys.insert(v.key);
 
@@ -142,7 +144,7 @@ TEST_CASE("after the tree changes, exactly the nodes with a new key make their c
       std::size_t fresh = 0;
       for (const auto& v : nodes_of(after)) fresh += !keys.contains(v.key);
       typename kinetic::Reduced_upkeep<Exact_kernel>::Work w;
-      upkeep.update(c, after, t1, {}, w);
+      upkeep.update(c, after, tree::Tree_links(after), nullptr, t1, {}, w);
       CHECK(w.nodes == fresh);
       changed_trees += fresh > 0;
       // The next step compares with this tree.
@@ -168,8 +170,9 @@ TEST_CASE("the tree queue after reshapes holds what a queue filled afresh and th
   std::size_t checks = 0;
   for (int round = 0; round < 60; ++round) {
     const tree::Kvd_tree& t = trees[static_cast<std::size_t>(round) % trees.size()];
-    reshaped->reshape(t);
-    heap->reshape(t);
+    const tree::Tree_links links(t);
+    reshaped->reshape(t, links, nullptr);
+    heap->reshape(t, links, nullptr);
     std::vector<int> live;
     for (const auto& v : nodes_of(t)) live.push_back(v.node);
     // Certificates at nodes no longer in the tree move; some others move,

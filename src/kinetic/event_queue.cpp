@@ -42,37 +42,50 @@ public:
 
   // Only the nodes whose children changed, and their ancestors, recompute
   // their earliest failures.
-  void reshape(const tree::Kvd_tree& t) override {
+  void reshape(const tree::Kvd_tree& t, const tree::Tree_links& links, const std::vector<int>* edited) override {
     for (std::size_t i = t.nodes.size(); i < slots_.size(); ++i)
       for (const auto& [id, time] : slots_[i].own) where_[id] = -1;
     slots_.resize(t.nodes.size());  // new slots are dirty
-    // Pre-order from the root. Slots it does not reach (removed nodes) are
-    // left without links, and dirty: their earliest failures are stale.
-    std::vector<bool> reached(slots_.size());
-    std::vector<int> order;
-    if (t.root >= 0) order.push_back(t.root);
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      const tree::Node& n = t.nodes[static_cast<std::size_t>(order[i])];
-      Slot& s = slot(order[i]);
-      reached[static_cast<std::size_t>(order[i])] = true;
-      if (s.left != n.left || s.right != n.right) s.dirty = true;
-      s.left = n.left;
-      s.right = n.right;
-      for (int c : {n.left, n.right})
-        if (c >= 0) slot(c).parent = order[i], order.push_back(c);
+    root_ = t.root;
+    // Released slots are left without links, and dirty: their earliest
+    // failures are stale.
+    const auto unlink = [&](std::size_t i) {
+      Slot unlinked;
+      unlinked.own = std::move(slots_[i].own);
+      slots_[i] = std::move(unlinked);
+    };
+    std::vector<int> relinked;
+    const auto relink = [&](int n) {
+      const tree::Node& node = t.nodes[static_cast<std::size_t>(n)];
+      Slot& s = slot(n);
+      if (s.left != node.left || s.right != node.right) s.dirty = true;
+      s.left = node.left;
+      s.right = node.right;
+      for (int c : {node.left, node.right})
+        if (c >= 0) slot(c).parent = n;
+      relinked.push_back(n);
+    };
+    if (edited) {
+      for (int n : *edited)
+        if (static_cast<std::size_t>(n) >= slots_.size()) continue;
+        else if (links.live(n)) relink(n);
+        else unlink(static_cast<std::size_t>(n));
+    } else {
+      for (std::size_t i = 0; i < slots_.size(); ++i)
+        if (links.live(static_cast<int>(i))) relink(static_cast<int>(i));
+        else unlink(i);
     }
     if (t.root >= 0) slot(t.root).parent = -1;
-    for (std::size_t i = 0; i < slots_.size(); ++i)
-      if (!reached[i]) {
-        Slot unlinked;
-        unlinked.own = std::move(slots_[i].own);
-        slots_[i] = std::move(unlinked);
+    // A dirty node's ancestors are dirty again (mark() relies on it); each
+    // path is walked up to a node already walked.
+    std::vector<char> walked(slots_.size());
+    for (int n : relinked) {
+      if (!slot(n).dirty) continue;
+      for (int i = slot(n).parent; i >= 0 && !walked[static_cast<std::size_t>(i)]; i = slot(i).parent) {
+        walked[static_cast<std::size_t>(i)] = 1;
+        slot(i).dirty = true;
       }
-    // A dirty node's ancestors are dirty again (mark() relies on it):
-    // children come after their parents in `order`.
-    for (auto it = order.rbegin(); it != order.rend(); ++it)
-      if (slot(*it).dirty && slot(*it).parent >= 0) slot(slot(*it).parent).dirty = true;
-    root_ = t.root;
+    }
   }
 
   void set(std::size_t id, int node, std::optional<Time> time) override {
@@ -152,7 +165,7 @@ public:
     heap_.clear();
     handles_.clear();
   }
-  void reshape(const tree::Kvd_tree&) override {}
+  void reshape(const tree::Kvd_tree&, const tree::Tree_links&, const std::vector<int>*) override {}
 
   void set(std::size_t id, int, std::optional<Time> time) override {
     if (id >= handles_.size()) handles_.resize(id + 1);

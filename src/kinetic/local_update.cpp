@@ -73,8 +73,8 @@ std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failin
 }
 
 template <class K>
-Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split, const std::set<SP>& moving,
-                         tree::Tree_journal* journal) {
+Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
+                         const std::set<SP>& moving, tree::Tree_journal* journal) {
   const scene::Scene& s = split.classifier().motion().scene();
   // The nodes of moving sites, with where each hangs.
   struct Held {
@@ -83,18 +83,17 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& sp
     bool right;
   };
   std::vector<Held> held;
-  std::vector<std::tuple<int, int, bool>> stack;
-  if (t.root >= 0) stack.emplace_back(t.root, -1, false);
-  while (!stack.empty()) {
-    const auto [n, parent, right] = stack.back();
-    stack.pop_back();
-    const tree::Node& nd = t.nodes[static_cast<std::size_t>(n)];
-    if (moving.contains(nd.cut)) held.push_back({tree::cut_priority(s, nd.cut), n, parent, right});
-    if (nd.left >= 0) stack.emplace_back(nd.left, n, false);
-    if (nd.right >= 0) stack.emplace_back(nd.right, n, true);
+  for (const SP& site : moving) {
+    const std::size_t priority = tree::cut_priority(s, site);
+    for (int n : links.holding(site)) {
+      const int parent = links.parent(n);
+      held.push_back({priority, n, parent, parent >= 0 && t.nodes[static_cast<std::size_t>(parent)].right == n});
+    }
   }
   // Lowest priority first: a node's parent is never dragged before it.
-  std::sort(held.begin(), held.end(), [](const Held& a, const Held& b) { return a.priority > b.priority; });
+  // Pieces of one site lie in disjoint subtrees; slots order them.
+  std::sort(held.begin(), held.end(),
+            [](const Held& a, const Held& b) { return std::tie(b.priority, a.node) < std::tie(a.priority, b.node); });
   tree::Tree_editor<K> editor(t, split, journal);
   std::vector<int> changed;
   for (const Held& h : held) {
@@ -115,8 +114,8 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& sp
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \
   template std::set<SP> moving_sites<K::Poly>(const scene::Scene&, const Certificate<K::Poly>&);            \
-  template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Fragment_splitter<K>&, const std::set<SP>&, \
-                                       tree::Tree_journal*);
+  template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Tree_links&,                          \
+                                       const tree::Fragment_splitter<K>&, const std::set<SP>&, tree::Tree_journal*);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_LOCAL_UPDATE)
 
 }  // namespace kvd::kinetic

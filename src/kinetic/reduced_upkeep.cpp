@@ -10,16 +10,48 @@ namespace kvd::kinetic {
 
 template <class K>
 typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
-                                                              const tree::Kvd_tree& t, const typename K::Time& now,
+                                                              const tree::Kvd_tree& t, const tree::Tree_links& links,
+                                                              const std::vector<int>* edited,
+                                                              const typename K::Time& now,
                                                               const std::set<Certificate_key>& failed, Work& work) {
   records_.resize(std::max(records_.size(), t.nodes.size()));
+  const bool whole = !edited || remake_;
   // The slots whose record holds a failed certificate, from the holders of
   // the failed keys (records are read below only as they were on entry).
-  std::vector<bool> failed_slot(records_.size());
+  std::vector<char> failed_slot(records_.size());
+  std::vector<int> failed_slots;
   for (const Certificate_key& key : failed)
     if (const auto it = holders_.find(key); it != holders_.end())
-      for (int slot : it->second) failed_slot[static_cast<std::size_t>(slot)] = true;
-  const auto holds_failed = [&](std::size_t slot) { return failed_slot[slot]; };
+      for (int slot : it->second)
+        if (!failed_slot[static_cast<std::size_t>(slot)]) failed_slot[static_cast<std::size_t>(slot)] = 1, failed_slots.push_back(slot);
+  const auto holds_failed = [&](std::size_t slot) { return failed_slot[slot] != 0; };
+  // What the walk must look at: the nodes the edit changed, those holding a
+  // failed certificate, and their ancestors. An unmarked node below the
+  // same ancestors as before roots a subtree the batch left alone, every
+  // record of which is kept in place (its keys cannot have changed).
+  std::vector<char> marked(whole ? 0 : t.nodes.size());
+  if (!whole) {
+    for (int n : *edited)
+      if (links.live(n)) links.mark_path(n, marked);
+    for (int slot : failed_slots)
+      if (links.live(slot)) links.mark_path(slot, marked);
+  }
+  // The slots whose records are not kept in place: released ones, and
+  // pending nodes (below); listed when they held a record.
+  std::vector<char> not_kept(records_.size());
+  std::vector<int> not_kept_slots;
+  const auto drop = [&](std::size_t slot) {
+    if (!not_kept[slot] && records_[slot].used) not_kept_slots.push_back(static_cast<int>(slot));
+    not_kept[slot] = 1;
+  };
+  if (whole) {
+    for (std::size_t slot = 0; slot < records_.size(); ++slot)
+      if (!links.live(static_cast<int>(slot))) drop(slot);
+  } else {
+    for (int n : *edited)
+      if (!links.live(n) && static_cast<std::size_t>(n) < records_.size()) drop(static_cast<std::size_t>(n));
+    for (std::size_t slot = t.nodes.size(); slot < records_.size(); ++slot) drop(slot);
+  }
   // 1. Pre-order: the nodes whose slot holds their key keep their record;
   // the others are pending, with their key and ancestors.
   struct Pending {
@@ -29,7 +61,6 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     int children_path;
   };
   std::vector<Pending> pending;
-  std::vector<bool> in_place(records_.size());
   struct Visit {
     int node, path;
     std::size_t depth;
@@ -40,20 +71,21 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   while (!stack.empty()) {
     const Visit v = stack.back();
     stack.pop_back();
-    ancestors.resize(v.depth);
     const auto slot = static_cast<std::size_t>(v.node);
     const tree::Node& n = t.nodes[slot];
     Record& r = records_[slot];
+    if (!whole && !marked[slot] && r.used && r.key.path == v.path) continue;
+    ancestors.resize(v.depth);
     int children;
     if (!remake_ && r.used && r.key.path == v.path && r.key.cut == n.cut &&
         (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(slot)) {
-      in_place[slot] = true;
       children = r.children_path;
     } else {
       const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersection_walls(n)}, next_path_);
       next_path_ += fresh;
       children = known->second;
       pending.push_back({v.node, Key{v.path, n.cut, tree::canonical(n.fragment)}, ancestors, children});
+      drop(slot);
     }
     ancestors.push_back(v.node);
     for (int child : {n.right, n.left})  // left first off the stack
@@ -67,9 +99,8 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     before.try_emplace(key, h.empty() ? -1 : *h.begin());
     return &h;
   };
-  for (std::size_t slot = 0; slot < records_.size(); ++slot)
-    if (!in_place[slot] && records_[slot].used)
-      for (const auto& cert : records_[slot].certificates) touch(cert.key)->erase(static_cast<int>(slot));
+  for (int slot : not_kept_slots)
+    for (const auto& cert : records_[static_cast<std::size_t>(slot)].certificates) touch(cert.key)->erase(slot);
   // 2. A pending key held before by another slot that is not kept in place
   // (the rebuild renumbers every node) keeps that slot's certificates;
   // the other pending nodes make theirs. Records are written afterwards:
@@ -81,7 +112,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const auto old = where_.find(pending[p].key);
     const auto from = old == where_.end() ? records_.size() : static_cast<std::size_t>(old->second);
-    if (!remake_ && from < records_.size() && !in_place[from] && !given[from] && !holds_failed(from)) {
+    if (!remake_ && from < records_.size() && not_kept[from] && !given[from] && !holds_failed(from)) {
       given[from] = true;
       certs[p] = std::move(records_[from].certificates);
     } else {
@@ -92,10 +123,9 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     }
   }
   // 3. The records of the tree just after.
-  for (std::size_t slot = 0; slot < records_.size(); ++slot) {
-    Record& r = records_[slot];
-    if (in_place[slot] || !r.used) continue;
-    if (const auto it = where_.find(r.key); it != where_.end() && it->second == static_cast<int>(slot)) where_.erase(it);
+  for (int slot : not_kept_slots) {
+    Record& r = records_[static_cast<std::size_t>(slot)];
+    if (const auto it = where_.find(r.key); it != where_.end() && it->second == slot) where_.erase(it);
     r = Record{};
   }
   std::vector<bool> rewritten(records_.size()), fresh(records_.size());
@@ -151,7 +181,8 @@ std::vector<Certificate<typename K::Poly>> reduced_certificates(const predicates
   Reduced_upkeep<K> upkeep;
   typename Reduced_upkeep<K>::Work work;
   std::vector<Certificate<typename K::Poly>> out;
-  for (const auto& held : upkeep.update(c, t, now, {}, work).changed) out.push_back(*held.certificate);
+  for (const auto& held : upkeep.update(c, t, tree::Tree_links(t), nullptr, now, {}, work).changed)
+    out.push_back(*held.certificate);
   return out;
 }
 

@@ -251,7 +251,7 @@ private:
     std::set<symbolic::Symbolic_plane> moving;
     for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, in_force_[id]));
     if (validator_.keeps_last()) before_ = current_;  // the update edits the tree in force
-    auto updated = builder_.update(current_, at, moving);
+    auto updated = builder_.update(current_, links_, at, moving);
     if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
       batch.nodes_touched = cost->nodes_touched;
@@ -296,7 +296,7 @@ private:
   }
   typename Reduced_upkeep<K>::Work keep_certificates(const std::set<Certificate_key>& failed) {
     if (o_.upkeep == Upkeep::all) upkeep_.remake_all();
-    queue_->reshape(current_);
+    queue_->reshape(current_, links_, unsettled());
     return put_in_force(failed);
   }
 
@@ -326,10 +326,12 @@ private:
       for (const auto& cert : all) offers.push_back({&cert, true});
       in_force_.replace(offers, *queue_, fails);
     } else {
-      const auto changes = upkeep_.update(builder_.classifier(), current_, now_, failed, work);
+      const auto changes = upkeep_.update(builder_.classifier(), current_, links_, unsettled(), now_, failed, work);
       for (const auto& held : changes.changed) offers.push_back({held.certificate, held.made});
       in_force_.apply(changes.gone, offers, *queue_, fails);
     }
+    settled_ = true;
+    edited_.clear();
     if (observer_) {
       std::vector<Certificate<typename K::Poly>> certs;
       in_force_.for_each([&](const auto& cert) { certs.push_back(cert); });
@@ -377,6 +379,10 @@ private:
     return take(std::move(after));
   }
 
+  // The nodes changed since the certificates were last put in force (none:
+  // the tree in force is a new build, to be looked at whole).
+  const std::vector<int>* unsettled() const { return settled_ ? &edited_ : nullptr; }
+
   // `after` becomes the tree in force, its structure hash updated along
   // the paths a local update changed, or made afresh for a build. Whether
   // the tree changed: equal structure hashes are an equal canonical
@@ -384,8 +390,15 @@ private:
   bool take(Tree_after after) {
     const std::string before = hashes_.root();
     current_ = std::move(*after.tree);
-    if (after.edited) hashes_.update(current_, *after.edited);
-    else hashes_.reset(current_);
+    if (after.edited) {
+      links_.update(current_, *after.edited);
+      hashes_.update(current_, links_, *after.edited);
+      edited_.insert(edited_.end(), after.edited->begin(), after.edited->end());
+    } else {
+      links_.reset(current_);
+      hashes_.reset(current_);
+      settled_ = false;
+    }
     return hashes_.root() != before;
   }
 
@@ -402,8 +415,13 @@ private:
   Time now_;
   std::optional<Time> limit_;
   tree::Kvd_tree current_;
+  tree::Tree_links links_;       // of current_
   tree::Subtree_hashes hashes_;  // of current_
   tree::Kvd_tree before_;        // current_ before a local update, when validation keeps it
+  // What changed in current_ since the certificates were last put in force
+  // (unsettled()): a build (settled_ false), or the nodes local updates edited.
+  bool settled_ = false;
+  std::vector<int> edited_;
   In_force<K> in_force_;
   Reduced_upkeep<K> upkeep_;
   Root_cache<K> roots_;

@@ -16,32 +16,15 @@ std::size_t at(int i) { return static_cast<std::size_t>(i); }
 
 void Subtree_hashes::reset(const Kvd_tree& t) {
   hash_.assign(t.nodes.size(), {});
-  parent_.assign(t.nodes.size(), -1);
-  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
-    const Node& n = t.nodes[i];
-    for (int c : {n.left, n.right})
-      if (c >= 0) parent_[at(c)] = static_cast<int>(i);
-  }
   // Every slot is marked; released ones are never reached from the root.
   rehash(t, t.root, std::vector<char>(t.nodes.size(), 1));
 }
 
-void Subtree_hashes::update(const Kvd_tree& t, const std::vector<int>& changed) {
+void Subtree_hashes::update(const Kvd_tree& t, const Tree_links& links, const std::vector<int>& changed) {
   hash_.resize(t.nodes.size());
-  parent_.resize(t.nodes.size(), -1);
-  std::vector<char> released(t.nodes.size(), 0);
-  for (int f : t.free_nodes) released[at(f)] = 1;
-  // A node whose parent changed hangs under a relinked or new node: the
-  // changed nodes give every new parent link.
-  for (int n : changed) {
-    if (released[at(n)]) continue;
-    for (int c : {t.nodes[at(n)].left, t.nodes[at(n)].right})
-      if (c >= 0) parent_[at(c)] = n;
-  }
-  if (t.root >= 0) parent_[at(t.root)] = -1;
   std::vector<char> stale(t.nodes.size(), 0);
   for (int n : changed)
-    for (int i = n; i >= 0 && !released[at(i)] && !stale[at(i)]; i = parent_[at(i)]) stale[at(i)] = 1;
+    if (links.live(n)) links.mark_path(n, stale);
   rehash(t, t.root, stale);
 }
 

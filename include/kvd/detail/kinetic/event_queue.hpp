@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "kvd/detail/tree/tree_links.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::kinetic {
@@ -32,8 +33,10 @@ public:
   // Removes every certificate and adopts the shape of `t`.
   virtual void reset(const tree::Kvd_tree& t) = 0;
   // Adopts the shape of `t` keeping the certificates where they are (a
-  // certificate at a node no longer in t must then be set again).
-  virtual void reshape(const tree::Kvd_tree& t) = 0;
+  // certificate at a node no longer in t must then be set again). `edited`
+  // lists the nodes changed since the last reset or reshape
+  // (Update_cost::changed); none: t may differ anywhere. `links` are t's.
+  virtual void reshape(const tree::Kvd_tree& t, const tree::Tree_links& links, const std::vector<int>* edited) = 0;
   // The certificates failing first, all at one time (empty when none fails).
   virtual std::vector<std::size_t> first() const = 0;
   virtual std::optional<Time> first_time() const = 0;

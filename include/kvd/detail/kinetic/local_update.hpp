@@ -27,6 +27,7 @@
 #include "kvd/scene/scene.hpp"
 #include "kvd/detail/tree/fragment_split.hpp"
 #include "kvd/detail/tree/journal.hpp"
+#include "kvd/detail/tree/tree_links.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::kinetic {
@@ -45,14 +46,16 @@ struct Update_cost {
   std::size_t sites = 0;          // moving sites
   std::size_t nodes_touched = 0;  // distinct nodes re-cut, relinked, created or removed (Tree_editor::touched)
   // Those nodes, with the parents given a new child in place of a dragged
-  // node: what the structure hash must hash again (Subtree_hashes::update).
+  // node: what the structure hash and the links must see again
+  // (Subtree_hashes::update, Tree_links::update).
   std::vector<int> changed;
 };
 
-// With a journal, every node is saved there before its first change, so
-// that a failed update can be undone.
+// `links` are t's: they find the nodes of the moving sites without a walk
+// of the tree. With a journal, every node is saved there before its first
+// change, so that a failed update can be undone.
 template <class K>
-Update_cost local_update(tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split,
+Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
                          const std::set<symbolic::Symbolic_plane>& moving, tree::Tree_journal* journal = nullptr);
 
 }  // namespace kvd::kinetic

@@ -25,6 +25,7 @@
 #include <tuple>
 #include <vector>
 
+#include "kvd/detail/tree/tree_links.hpp"
 #include "kvd/kinetic/certificate.hpp"
 
 namespace kvd::kinetic {
@@ -70,10 +71,14 @@ public:
   };
 
   // Brings the reduced set up to date with t just after `now`; `failed`
-  // names the certificates that failed since the last update. Each key is
-  // in force once, held by the least node slot that has it. The pointers
-  // stay valid until the next update or clear().
-  Changes update(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now,
+  // names the certificates that failed since the last update, `edited` the
+  // nodes changed since then (Update_cost::changed), or none when t is new
+  // (a build); `links` are t's. Only those nodes, the failed ones, their
+  // ancestors and the subtrees below a node whose key changed are looked
+  // at. Each key is in force once, held by the least node slot that has
+  // it. The pointers stay valid until the next update or clear().
+  Changes update(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const tree::Tree_links& links,
+                 const std::vector<int>* edited, const typename K::Time& now,
                  const std::set<Certificate_key>& failed, Work& work);
   // Forgets every node's certificates and what is in force: the next update
   // makes them all, and reports them all as changed.

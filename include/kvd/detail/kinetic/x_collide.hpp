@@ -27,11 +27,15 @@ public:
   // The contacts among the certificates `failing` at t: VT, ET or TT
   // certificates whose vertex lies in the triangle of another object at t
   // (an object's own features lie in its faces' planes by construction).
+  // The contacts are named in certificate-key order.
   std::optional<Meeting> contact(const predicates::Classifier<K>& c, const scene::Scene& s, const In_force<K>& in_force,
                                  const std::vector<std::size_t>& failing, const Time& t) const {
     Meeting m;
     std::string features;
-    for (std::size_t id : failing) {
+    // Named in key order: the queue's order among simultaneous failures is its own.
+    std::vector<std::size_t> by_key = failing;
+    std::ranges::sort(by_key, [&](std::size_t a, std::size_t b) { return in_force[a].key < in_force[b].key; });
+    for (std::size_t id : by_key) {
       const auto& cert = in_force[id];
       if (!may_collide(cert.key.type)) continue;
       const Touch th = touch(s, cert.vertices, cert.planes);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "kvd/detail/tree/tree_links.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::tree {
@@ -18,8 +19,9 @@ public:
   void reset(const Kvd_tree& t);
   // t after edits that re-cut, relinked or created exactly the nodes
   // `changed` (released slots may be listed too), from the tree these
-  // hashes were of: their hashes and their ancestors' are made again.
-  void update(const Kvd_tree& t, const std::vector<int>& changed);
+  // hashes were of, `links` being t's already: their hashes and their
+  // ancestors' are made again.
+  void update(const Kvd_tree& t, const Tree_links& links, const std::vector<int>& changed);
   // The structure hash of the tree: tree::structure_hash(t).
   const std::string& root() const;
 
@@ -28,7 +30,6 @@ private:
   void rehash(const Kvd_tree& t, int from, const std::vector<char>& stale);
 
   std::vector<std::string> hash_;  // per node slot, of its subtree (lowercase hex)
-  std::vector<int> parent_;        // per node slot, -1 at the root
   std::string root_;
 };
 
