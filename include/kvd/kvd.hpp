@@ -47,6 +47,8 @@ public:
   // triangles meet at the start.
   Kinetic_kvd(const K& kernel, const scene::Scene& scene, kinetic::Options options = {},
               kinetic::Observer<K>* observer = nullptr);
+  // The kernel is held by reference: a temporary one would dangle.
+  Kinetic_kvd(const K&&, const scene::Scene&, kinetic::Options = {}, kinetic::Observer<K>* = nullptr) = delete;
   ~Kinetic_kvd();
   Kinetic_kvd(Kinetic_kvd&&) noexcept;
   Kinetic_kvd& operator=(Kinetic_kvd&&) noexcept;

@@ -1,7 +1,11 @@
 #include "kvd/detail/kinetic/local_update.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <string>
 #include <tuple>
+
+#include "kvd/tree/compare.hpp"
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -52,6 +56,25 @@ void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
     case SP::Kind::E: edge_sites(s, p.id, out); break;
     case SP::Kind::T: out.insert(p); break;
   }
+}
+
+// The nodes_changed of Update_cost: the saved nodes that held a node before
+// against the live changed nodes after (a changed slot past the end was
+// released and dropped), compared by canonical text.
+std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& journal, std::vector<int> changed) {
+  std::multiset<std::string> before, after;
+  const std::set<int> free_before(journal.free_at_start().begin(), journal.free_at_start().end());
+  for (const auto& [n, node] : journal.saved())
+    if (!free_before.contains(n)) before.insert(tree::canonical_text(node));
+  const std::set<int> free_after(t.free_nodes.begin(), t.free_nodes.end());
+  std::ranges::sort(changed);
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  for (int n : changed)
+    if (static_cast<std::size_t>(n) < t.nodes.size() && !free_after.contains(n)) after.insert(tree::canonical_text(t.nodes[static_cast<std::size_t>(n)]));
+  std::vector<std::string> gone, come;
+  std::ranges::set_difference(before, after, std::back_inserter(gone));
+  std::ranges::set_difference(after, before, std::back_inserter(come));
+  return gone.size() + come.size();
 }
 
 }  // namespace
@@ -109,7 +132,8 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
   const std::vector<int> touched = editor.touched_nodes();
   changed.insert(changed.end(), touched.begin(), touched.end());
-  return {moving.size(), touched.size(), std::move(changed)};
+  const std::size_t differ = journal ? nodes_changed(t, *journal, changed) : 0;
+  return {moving.size(), touched.size(), differ, std::move(changed)};
 }
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \

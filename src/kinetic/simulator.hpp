@@ -187,7 +187,6 @@ private:
     const Stopwatch tree_watch;
     Time at = *next;
     Tree_after after;
-    // In the queue's order: the words of a contact name its features so.
     if (auto contact = x_collide_.contact(builder_.classifier(), scene_, in_force_, failing, *next))
       after.meeting = std::move(*contact);
     else after = local() ? update_locally(at, batch) : build_at(at);
@@ -255,6 +254,7 @@ private:
     if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
       batch.nodes_touched = cost->nodes_touched;
+      batch.nodes_changed = cost->nodes_changed;
       return {std::move(current_), {}, std::move(cost->changed)};
     }
     before_ = {};  // undone: the tree in force is current_ again

@@ -204,6 +204,7 @@ private:
     d["changed"] = b.changed;
     d["structure_hash"] = b.structure;
     d["nodes_touched"] = b.nodes_touched;
+    d["nodes_changed"] = b.nodes_changed;
     d["certificates_recomputed"] = b.certificates_recomputed;
     d["update_seconds"] = b.tree_seconds + b.certificate_seconds + b.record_seconds;
     return d;

@@ -64,11 +64,13 @@ const char* const simulate_help =
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
-    "           \"nodes_touched\": N, \"nodes_recomputed\": N, \"certificates_recomputed\": N}, ...],\n"
+    "           \"nodes_touched\": N, \"nodes_changed\": N, \"nodes_recomputed\": N,\n"
+    "           \"certificates_recomputed\": N}, ...],\n"
     "           \"motion_changes\": [{\"time\": EXACT, \"approx\",\n"
     "           \"collision\": EXACT, \"collision_approx\", \"objects\": [ID, ...], \"motions\": [...],\n"
     "           \"batches_before\": N, \"tree_changed\": BOOL, \"contact\": TEXT}, ...], \"update\": U,\n"
-    "           \"nodes_touched\": {\"median\", \"below_10_share\"} (null with rebuild),\n"
+    "           \"nodes_touched\": {\"median\", \"changed_median\", \"below_10_share\"} (null with\n"
+    "           rebuild; changed: nodes whose cut or fragment the update changed),\n"
     "           \"certificates_recomputed\": {\"median\", \"nodes_median\", \"total\"},\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
     "           \"stopped\": events|limit|exhausted|collision|stuck, \"validation\": every|end|none,\n"
@@ -196,12 +198,14 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                          {"certificates", e.certificates},
                          {"changed", e.changed},
                          {"nodes_touched", e.nodes_touched},
+                         {"nodes_changed", e.nodes_changed},
                          {"nodes_recomputed", e.nodes_recomputed},
                          {"certificates_recomputed", e.certificates_recomputed}});
     Json changes = Json::array();
     for (const auto& c : sim.motion_changes) changes.push_back(motion_change_json(k, c));
     const Json touched_json = o.update == kinetic::Update::local
                                   ? Json{{"median", decimal(fixed(touched.median, 1))},
+                                         {"changed_median", decimal(fixed(touched.changed_median, 1))},
                                          {"below_10_share", decimal(fixed(touched.below_10_share, 3))}}
                                   : Json(nullptr);
     const Json j = {

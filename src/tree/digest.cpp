@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cstdint>
-#include <cstdio>
 #include <stdexcept>
 
 #ifdef KVD_HAVE_OPENSSL
@@ -13,12 +12,13 @@ namespace kvd::tree {
 
 namespace {
 
+// Lower-case hex; written out by hand, as every Merkle node of a batch is hashed.
 std::string hex(const unsigned char* digest, std::size_t length) {
-  std::string out;
-  char byte[3];
+  static constexpr char digits[] = "0123456789abcdef";
+  std::string out(2 * length, '0');
   for (std::size_t i = 0; i < length; ++i) {
-    std::snprintf(byte, sizeof byte, "%02x", digest[i]);
-    out += byte;
+    out[2 * i] = digits[digest[i] >> 4];
+    out[2 * i + 1] = digits[digest[i] & 0xf];
   }
   return out;
 }

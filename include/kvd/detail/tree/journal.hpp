@@ -26,6 +26,11 @@ public:
     old_.emplace_back(n, t_.nodes[i]);
   }
 
+  // The nodes saved, each as it was before its first edit, and the free
+  // slots when the journal began (a saved slot among them held no node).
+  const std::vector<std::pair<int, Node>>& saved() const { return old_; }
+  const std::vector<int>& free_at_start() const { return free_; }
+
   // The tree exactly as it was when the journal began, node for node.
   void undo() {
     t_.nodes.resize(nodes_);
