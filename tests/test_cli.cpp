@@ -259,24 +259,30 @@ TEST_CASE("kvd bench thesis writes the thesis's tables beside ours, or nothing o
   CHECK(std::ifstream(out + "/thesis.csv").good());
 }
 
-TEST_CASE("kvd bench update compares the local update with the rebuild, or writes nothing on bad input", "[cli][bench]") {
+TEST_CASE("kvd bench update compares the local update with the rebuild over N, or writes nothing on bad input",
+          "[cli][bench]") {
   const std::string out = std::string(KVD_BINARY_DIR) + "/bench-update";
-  const std::string data = " --data " + std::string(KVD_SOURCE_DIR) + "/data --out " + out;
+  const std::string to = " --out " + out;
   std::remove((out + "/update.md").c_str());
   CHECK(run("bench update --help").out.find("usage: kvd bench update") != std::string::npos);
-  CHECK(run("bench update --scenes no-such-scene" + data).status == 2);
-  CHECK(run("bench update --events x" + data).status == 2);
+  CHECK(run("bench update --sizes 0" + to).status == 2);
+  CHECK(run("bench update --sizes 20,x" + to).status == 2);
+  CHECK(run("bench update --events x" + to).status == 2);
   CHECK(!std::ifstream(out + "/update.md").good());
-  const Run r = run("bench update --scenes two-triangles,boxes --events 40" + data);
+  const Run r = run("bench update --sizes 20,10 --events 20 --rebuild-up-to 10 --upkeep-all-up-to 0" + to);
   REQUIRE(r.status == 0);
   std::ifstream f(out + "/update.md");
   const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  // Every batch of two-triangles (3) and boxes (3), and the four runs of
-  // each end in the same tree.
-  CHECK(md.find("| two-triangles | 2 | 3 |") != std::string::npos);
-  CHECK(md.find("| boxes | ") != std::string::npos);
+  // The sizes in increasing order, the rebuild only up to 10 triangles, no
+  // run with --upkeep all, and the exact runs of each size in one tree.
+  CHECK(md.find("| 10 | ") < md.find("| 20 | "));
   CHECK(md.find("**no**") == std::string::npos);
-  CHECK(std::ifstream(out + "/update.csv").good());
+  std::ifstream c(out + "/update.csv");
+  const std::string csv((std::istreambuf_iterator<char>(c)), std::istreambuf_iterator<char>());
+  CHECK(csv.find("10,\"rebuild\"") != std::string::npos);
+  CHECK(csv.find("20,\"rebuild\"") == std::string::npos);
+  CHECK(csv.find("20,\"local, double\"") != std::string::npos);
+  CHECK(csv.find("upkeep all") == std::string::npos);
 }
 
 namespace {

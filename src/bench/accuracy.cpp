@@ -12,6 +12,7 @@
 
 #include "bench.hpp"
 #include "cli.hpp"
+#include "gnuplot.hpp"
 #include "kvd/kinetic/differential.hpp"
 #include "report.hpp"
 
@@ -201,11 +202,6 @@ std::string gnuplot_script(const std::string& csv_path, const std::string& svg_p
          "unset multiplot\n";
 }
 
-bool on_path(const std::string& program) {
-  const std::string command = "command -v " + program + " > /dev/null 2>&1";
-  return std::system(command.c_str()) == 0;
-}
-
 }  // namespace
 
 int accuracy(cli::Args& args) {
@@ -252,18 +248,9 @@ int accuracy(cli::Args& args) {
   cli::write_atomically("bench accuracy", csv_path, csv(rows));
   cli::write_atomically("bench accuracy", out + "/accuracy.md", markdown(rows, kernels, events));
   std::cout << markdown(rows, kernels, events);
-  if (!on_path("gnuplot")) {
-    std::cerr << "kvd bench accuracy: gnuplot not found (apt-get install gnuplot-nox): no plot\n";
-    return 0;
-  }
   // The script stays beside the data, to re-plot by hand.
-  cli::write_atomically("bench accuracy", out + "/accuracy.gp", gnuplot_script(csv_path, svg_path, kernels, events));
-  const std::string command = "gnuplot '" + out + "/accuracy.gp'";
-  if (std::system(command.c_str()) != 0) {
-    std::filesystem::remove(svg_path);
-    std::cerr << "kvd bench accuracy: gnuplot failed; the CSV and the tables are written\n";
+  if (!run_gnuplot("accuracy", out + "/accuracy.gp", gnuplot_script(csv_path, svg_path, kernels, events), {svg_path}))
     return 0;
-  }
   std::cerr << "kvd bench accuracy: wrote " << csv_path << ", " << out << "/accuracy.md, " << svg_path << "\n";
   return 0;
 }

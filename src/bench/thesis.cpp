@@ -6,12 +6,13 @@
 // values beside the thesis's), thesis.csv (one row per measurement) and,
 // when gnuplot is installed, thesis-construction.svg and thesis-update.svg.
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 #include "bench.hpp"
 #include "cli.hpp"
+#include "gnuplot.hpp"
+#include "sweep.hpp"
 #include "kvd/scene/generators.hpp"
 #include "thesis.hpp"
 
@@ -52,20 +53,6 @@ const char* const thesis_help =
     "\n"
     "Exit status: 0 on success, 2 on bad input.\n";
 
-std::vector<std::size_t> sizes_option(const std::string& text) {
-  std::vector<std::size_t> sizes;
-  for (const std::string& item : cli::comma_list(text)) {
-    if (item.size() > 6 || item.find_first_not_of("0123456789") != std::string::npos || std::stoul(item) == 0)
-      throw cli::Usage_error("kvd bench thesis: --sizes expects positive numbers of triangles such as 25,50,100, "
-                             "got '" + text + "'");
-    sizes.push_back(std::stoul(item));
-  }
-  if (sizes.empty()) throw cli::Usage_error("kvd bench thesis: --sizes needs at least one size");
-  std::sort(sizes.begin(), sizes.end());
-  sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
-  return sizes;
-}
-
 // The scenes of one family and size: the data file (all moving linearly),
 // and generated as kvd generate does with seed 1, a tenth moving, none
 // moving, and all moving quadratically.
@@ -75,40 +62,13 @@ struct Sized_scenes {
   scene::Scene all_moving, tenth_moving, still, quadratic;
 };
 
-scene::Scene generated(const std::string& family, std::size_t size, const scene::Q& moving, int degree) {
-  scene::Uniform_params p;
-  p.triangles = size;
-  p.moving = moving;
-  p.degree = degree;
-  p.seed = 1;
-  try {
-    return family == "uniform-scale" ? scene::uniform_scale(p) : scene::uniform_density(p);
-  } catch (const scene::Generator_error& e) {
-    throw cli::Usage_error("kvd bench thesis: generating " + family + " " + std::to_string(size) + ": " + e.what());
-  }
-}
-
-bool on_path(const std::string& program) {
-  const std::string command = "command -v " + program + " > /dev/null 2>&1";
-  return std::system(command.c_str()) == 0;
-}
-
 // Runs gnuplot on the results; whether it wrote the plots.
 bool plot(const Config& c, const Results& r) {
-  if (!on_path("gnuplot")) {
-    std::cerr << "kvd bench thesis: gnuplot not found (apt-get install gnuplot-nox): no plots\n";
-    return false;
-  }
   // The script and its data stay beside the plots, to re-plot by hand.
   cli::write_atomically("bench thesis", c.out + "/thesis-plot.dat", plot_data(c, r));
-  cli::write_atomically("bench thesis", c.out + "/thesis.gp", gnuplot_script(c));
-  const std::string command = "gnuplot '" + c.out + "/thesis.gp'";
-  if (std::system(command.c_str()) != 0) {
-    std::filesystem::remove(c.out + "/thesis-construction.svg");
-    std::filesystem::remove(c.out + "/thesis-update.svg");
-    std::cerr << "kvd bench thesis: gnuplot failed; the CSV and the tables are written\n";
+  if (!run_gnuplot("thesis", c.out + "/thesis.gp", gnuplot_script(c),
+                   {c.out + "/thesis-construction.svg", c.out + "/thesis-update.svg"}))
     return false;
-  }
   std::cerr << "kvd bench thesis: wrote " << c.out << "/thesis-construction.svg and " << c.out
             << "/thesis-update.svg\n";
   return true;
@@ -124,7 +84,7 @@ int thesis(cli::Args& args) {
       std::cout << thesis_help;
       return 0;
     }
-    if (a == "--sizes") c.sizes = sizes_option(args.value(a));
+    if (a == "--sizes") c.sizes = sizes_option("thesis", args.value(a));
     else if (a == "--events") c.events = args.unsigned_value(a);
     else if (a == "--simulate-up-to") c.simulate_up_to = args.unsigned_value(a);
     else if (a == "--kernels") c.kernels = cli::comma_list(args.value(a));
@@ -144,9 +104,9 @@ int thesis(cli::Args& args) {
                         {}, {}, {}});
   const scene::Scene rotation = scene::load_scene(c.data + "/stiff/rational-rotation.json");
   for (Sized_scenes& s : scenes) {
-    s.tenth_moving = generated(s.family, s.size, scene::Q(1, 10), 1);
-    s.still = generated(s.family, s.size, 0, 1);
-    s.quadratic = generated(s.family, s.size, 1, 2);
+    s.tenth_moving = generated("thesis", s.family, s.size, scene::Q(1, 10), 1);
+    s.still = generated("thesis", s.family, s.size, 0, 1);
+    s.quadratic = generated("thesis", s.family, s.size, 1, 2);
   }
   std::error_code ec;
   std::filesystem::create_directories(c.out, ec);

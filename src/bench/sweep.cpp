@@ -1,0 +1,39 @@
+#include "sweep.hpp"
+
+#include <algorithm>
+
+#include "cli.hpp"
+#include "kvd/scene/generators.hpp"
+
+namespace kvd::bench {
+
+std::vector<std::size_t> sizes_option(const std::string& suite, const std::string& text) {
+  std::vector<std::size_t> sizes;
+  for (const std::string& item : cli::comma_list(text)) {
+    if (item.size() > 6 || item.find_first_not_of("0123456789") != std::string::npos || std::stoul(item) == 0)
+      throw cli::Usage_error("kvd bench " + suite + ": --sizes expects positive numbers of triangles such as "
+                             "25,50,100, got '" + text + "'");
+    sizes.push_back(std::stoul(item));
+  }
+  if (sizes.empty()) throw cli::Usage_error("kvd bench " + suite + ": --sizes needs at least one size");
+  std::sort(sizes.begin(), sizes.end());
+  sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+  return sizes;
+}
+
+scene::Scene generated(const std::string& suite, const std::string& family, std::size_t size, const scene::Q& moving,
+                       int degree) {
+  scene::Uniform_params p;
+  p.triangles = size;
+  p.moving = moving;
+  p.degree = degree;
+  p.seed = 1;
+  try {
+    return family == "uniform-scale" ? scene::uniform_scale(p) : scene::uniform_density(p);
+  } catch (const scene::Generator_error& e) {
+    throw cli::Usage_error("kvd bench " + suite + ": generating " + family + " " + std::to_string(size) + ": " +
+                           e.what());
+  }
+}
+
+}  // namespace kvd::bench

@@ -1,0 +1,22 @@
+// What the bench suites that sweep the number of triangles share: the
+// --sizes option, and the scenes generated for a size as `kvd generate
+// FAMILY --triangles N --moving F --degree D --seed 1` makes them.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "kvd/scene/scene.hpp"
+
+namespace kvd::bench {
+
+// "25,50,100" as sizes, increasing and distinct; a Usage_error naming
+// `kvd bench SUITE` if an item is not a positive number of triangles.
+std::vector<std::size_t> sizes_option(const std::string& suite, const std::string& text);
+
+// The uniform-scale or uniform-density scene of `size` triangles, seed 1.
+scene::Scene generated(const std::string& suite, const std::string& family, std::size_t size, const scene::Q& moving,
+                       int degree);
+
+}  // namespace kvd::bench
