@@ -63,7 +63,9 @@ std::string csv(const std::vector<Size>& sizes) {
   for (const Size& s : sizes)
     for (const Run& r : s.runs) {
       if (!r.failure.empty()) {
-        out += std::to_string(s.triangles) + ",\"" + r.configuration + "\",,,,,,,,,,,,,\"" + r.failure + "\"\n";
+        std::string quoted;
+        for (char ch : r.failure) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        out += std::to_string(s.triangles) + ",\"" + r.configuration + "\",,,,,,,,,,,,,\"" + quoted + "\"\n";
         continue;
       }
       const bool local = r.configuration.starts_with("local");

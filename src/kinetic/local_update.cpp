@@ -1,7 +1,7 @@
 #include "kvd/detail/kinetic/local_update.hpp"
 
 #include <algorithm>
-#include <iterator>
+#include <map>
 #include <string>
 #include <tuple>
 
@@ -58,23 +58,28 @@ void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
   }
 }
 
-// The nodes_changed of Update_cost: the saved nodes that held a node before
-// against the live changed nodes after (a changed slot past the end was
-// released and dropped), compared by canonical text.
+// The nodes_changed of Update_cost, from the journal's saved nodes (those
+// that held a node before) and the live changed nodes after, by canonical
+// text: the slots whose text after is new or whose text before is gone.
+// Texts are distinct within a tree (pieces of one site are disjoint).
 std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& journal, std::vector<int> changed) {
-  std::multiset<std::string> before, after;
+  std::map<int, std::string> before, after;
   const std::set<int> free_before(journal.free_at_start().begin(), journal.free_at_start().end());
   for (const auto& [n, node] : journal.saved())
-    if (!free_before.contains(n)) before.insert(tree::canonical_text(node));
+    if (!free_before.contains(n)) before.emplace(n, tree::canonical_text(node));
   const std::set<int> free_after(t.free_nodes.begin(), t.free_nodes.end());
-  std::ranges::sort(changed);
-  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-  for (int n : changed)
-    if (static_cast<std::size_t>(n) < t.nodes.size() && !free_after.contains(n)) after.insert(tree::canonical_text(t.nodes[static_cast<std::size_t>(n)]));
-  std::vector<std::string> gone, come;
-  std::ranges::set_difference(before, after, std::back_inserter(gone));
-  std::ranges::set_difference(after, before, std::back_inserter(come));
-  return gone.size() + come.size();
+  for (int n : changed)  // a changed slot past the end was released and dropped
+    if (static_cast<std::size_t>(n) < t.nodes.size() && !free_after.contains(n))
+      after.emplace(n, tree::canonical_text(t.nodes[static_cast<std::size_t>(n)]));
+  std::set<std::string> texts_before, texts_after;
+  for (const auto& [n, text] : before) texts_before.insert(text);
+  for (const auto& [n, text] : after) texts_after.insert(text);
+  std::set<int> slots;
+  for (const auto& [n, text] : after)
+    if (!texts_before.contains(text)) slots.insert(n);
+  for (const auto& [n, text] : before)
+    if (!texts_after.contains(text)) slots.insert(n);
+  return slots.size();
 }
 
 }  // namespace

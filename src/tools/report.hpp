@@ -63,7 +63,8 @@ Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
 }
 
 // Nodes touched per batch by the local update (thesis 7.3), and of those the
-// nodes whose cut or fragment changed: their ratio measures locality.
+// nodes whose cut or fragment changed: their ratio measures locality. Over
+// the batches the local update made.
 struct Touched {
   double median = 0;
   double changed_median = 0;
@@ -73,6 +74,7 @@ template <class Time>
 Touched nodes_touched(const kinetic::Simulation<Time>& sim) {
   std::vector<double> n, changed;
   for (const auto& b : sim.batches) {
+    if (b.moving_sites == 0) continue;  // not a local update: a rebuild, or a floating-point repair's
     n.push_back(static_cast<double>(b.nodes_touched));
     changed.push_back(static_cast<double>(b.nodes_changed));
   }

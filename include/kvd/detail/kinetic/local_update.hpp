@@ -45,10 +45,11 @@ std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const Cer
 struct Update_cost {
   std::size_t sites = 0;          // moving sites
   std::size_t nodes_touched = 0;  // distinct nodes re-cut, relinked, created or removed (Tree_editor::touched)
-  // Of the nodes before and after the update, those whose cut and fragment
-  // the other side has not (a multiset difference, both ways): what the
-  // event changed. A piece dragged out and inserted again as it was, or a
-  // node only relinked, is touched, not changed. Counted with a journal only.
+  // Of the nodes touched, those whose cut and fragment after the update no
+  // node had before, or whose cut and fragment before no node has after:
+  // what the event changed. A piece dragged out and inserted again as it
+  // was, or a node only relinked, is touched, not changed. Counted with a
+  // journal only.
   std::size_t nodes_changed = 0;
   // Those nodes, with the parents given a new child in place of a dragged
   // node: what the structure hash and the links must see again
