@@ -78,6 +78,21 @@ std::string below(tree::Kvd_tree t, const SP& cut) {
   return "";
 }
 
+// f(s, c, at, t) for random-20, uniform-scale-25 and boxes, each built
+// in kernel K just after t = 1: scenes whose local updates merge, split,
+// join, release and recycle slots.
+template <class K, class F>
+void on_built_scenes(F f) {
+  for (const char* name : {"random-20.json", "uniform-scale-25.json", "boxes.json"}) {
+    CAPTURE(name);
+    const scene::Scene s = load(name);
+    const K k;
+    const predicates::Classifier<K> c(k, s);
+    const auto at = k.time(typename K::FT(1));
+    f(s, c, at, tree::build(c, at));
+  }
+}
+
 // A small generated scene: `uniform-density` with n triangles (the same
 // bytes on every platform for a seed).
 scene::Scene generated(std::size_t n, std::uint64_t seed) {
@@ -130,13 +145,7 @@ TEMPLATE_TEST_CASE("the journal undoes a local update exactly, node for node", "
   // again (merges, splits, joins, recycled slots: the same tree, in other
   // slots), then the journal undone: the same node array, root and free
   // slots as before.
-  for (const char* name : {"random-20.json", "uniform-scale-25.json", "boxes.json"}) {
-    CAPTURE(name);
-    const scene::Scene s = load(name);
-    const TestType k;
-    const predicates::Classifier<TestType> c(k, s);
-    const auto at = k.time(typename TestType::FT(1));
-    tree::Kvd_tree t = tree::build(c, at);
+  on_built_scenes<TestType>([](const scene::Scene& s, const auto& c, const auto& at, tree::Kvd_tree t) {
     const tree::Kvd_tree before = t;
     const auto same = [&] {
       if (t.nodes.size() != before.nodes.size() || t.root != before.root || t.free_nodes != before.free_nodes)
@@ -159,7 +168,7 @@ TEMPLATE_TEST_CASE("the journal undoes a local update exactly, node for node", "
       CHECK(same());
     }
     CHECK(edited > 0);  // the updates did move nodes between slots
-  }
+  });
 }
 
 TEMPLATE_TEST_CASE("links and hashes kept from the changed nodes are the tree's after every local update", "[local]",
@@ -169,13 +178,7 @@ TEMPLATE_TEST_CASE("links and hashes kept from the changed nodes are the tree's 
   // released and recycled): the links and the per-subtree hashes updated
   // from each update's changed nodes equal those made afresh from the tree.
   std::size_t released = 0;
-  for (const char* name : {"random-20.json", "uniform-scale-25.json", "boxes.json"}) {
-    CAPTURE(name);
-    const scene::Scene s = load(name);
-    const TestType k;
-    const predicates::Classifier<TestType> c(k, s);
-    const auto at = k.time(typename TestType::FT(1));
-    tree::Kvd_tree t = tree::build(c, at);
+  on_built_scenes<TestType>([&](const scene::Scene& s, const auto& c, const auto& at, tree::Kvd_tree t) {
     tree::Tree_links links(t);
     tree::Subtree_hashes hashes(t);
     const auto sites = tree::sites_in_priority_order(s);
@@ -194,7 +197,7 @@ TEMPLATE_TEST_CASE("links and hashes kept from the changed nodes are the tree's 
       CHECK(hashes.root() == tree::structure_hash(t));
       released += t.free_nodes.size();
     }
-  }
+  });
   CHECK(released > 0);  // slots were released (and the index had to drop them)
 }
 

@@ -66,10 +66,11 @@ public:
       relinked.push_back(n);
     };
     if (edited) {
-      for (int n : *edited)
-        if (static_cast<std::size_t>(n) >= slots_.size()) continue;
-        else if (links.live(n)) relink(n);
+      for (int n : *edited) {
+        if (static_cast<std::size_t>(n) >= slots_.size()) continue;  // released and dropped: unlinked above
+        if (links.live(n)) relink(n);
         else unlink(static_cast<std::size_t>(n));
+      }
     } else {
       for (std::size_t i = 0; i < slots_.size(); ++i)
         if (links.live(static_cast<int>(i))) relink(static_cast<int>(i));

@@ -22,8 +22,11 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   std::vector<int> failed_slots;
   for (const Certificate_key& key : failed)
     if (const auto it = holders_.find(key); it != holders_.end())
-      for (int slot : it->second)
-        if (!failed_slot[static_cast<std::size_t>(slot)]) failed_slot[static_cast<std::size_t>(slot)] = 1, failed_slots.push_back(slot);
+      for (int slot : it->second) {
+        char& seen = failed_slot[static_cast<std::size_t>(slot)];
+        if (!seen) failed_slots.push_back(slot);
+        seen = 1;
+      }
   const auto holds_failed = [&](std::size_t slot) { return failed_slot[slot] != 0; };
   // What the walk must look at: the nodes the edit changed, those holding a
   // failed certificate, and their ancestors. An unmarked node below the
