@@ -145,3 +145,75 @@ TEST_CASE("sign_at an algebraic instant agrees with CGAL", "[roots][cgal]") {
   CHECK(mismatches == 0);
   CHECK(zeros > 20);
 }
+
+// Degrees 1 and 2 take closed forms, not bisection: rational roots from a
+// square discriminant, irrational ones bracketed by an integer square root.
+// Queried from rational and from algebraic instants, including an instant
+// that is itself one of the roots, given by another polynomial.
+TEST_CASE("closed forms for degrees 1 and 2 agree with CGAL, after rational and algebraic instants",
+          "[roots][cgal]") {
+  kvd::testing::Random_polys rnd(20261125);
+  int checks = 0, rational_roots = 0, mismatches = 0, equal_to_after = 0;
+  auto linear = [&](unsigned long bits) {
+    ZPoly l{rnd.integer(bits), rnd.integer(bits)};
+    while (l[1] == 0) l[1] = rnd.integer(bits);
+    return l;
+  };
+  for (int i = 0; i < 3000; ++i) {
+    const unsigned long bits = 1 + rnd.below(80);
+    const int kind = static_cast<int>(rnd.below(3));
+    // A product of two linear factors (square discriminant), a random
+    // quadratic, or a linear polynomial.
+    const ZPoly f = linear(bits);
+    const ZPoly p = kind == 0 ? kvd::zpoly::mul(f, linear(bits)) : kind == 1 ? rnd.dense(2, bits) : f;
+    // The instants: a rational, and the roots of another polynomial, which a
+    // quarter of the time shares a root with p (f, or p itself times a factor).
+    ZPoly g = rnd.dense(2, 1 + rnd.below(40));
+    if (rnd.below(4) == 0) g = kvd::zpoly::mul(kind == 1 ? p : f, linear(1 + rnd.below(40)));
+    const auto starts = kvd::test::sign_changing_roots(kvd::zpoly::to_poly(g), mpq_class(-1) << 300);
+    std::vector<Exact_time> afters{Exact_time(rnd.rational(1 + rnd.below(40)))};
+    for (const auto& s : starts) afters.push_back(s);
+    const Cgal_roots cgal(p);
+    for (const Exact_time& after : afters) {
+      const Exact_time fresh = after.detached();  // wide as found, not refined by an earlier query
+      const std::optional<Exact_time> got = k.next_root(kvd::zpoly::to_poly(p), fresh);
+      std::optional<std::size_t> expected;
+      for (std::size_t j = 0; j < cgal.size() && !expected; ++j) {
+        if (cgal.multiplicity(j) % 2 == 0) continue;
+        const int c = cgal_compare(cgal, j, after);
+        equal_to_after += c == 0;
+        if (c > 0) expected = j;
+      }
+      ++checks;
+      if (got) rational_roots += got->is_rational();
+      const bool same = got && expected ? cgal_compare(cgal, *expected, *got) == 0 : !got && !expected;
+      if (!same && mismatches++ < 3) UNSCOPED_INFO("p = [" << show(p) << "], after " << after.to_string());
+    }
+  }
+  WARN(checks << " queries, " << rational_roots << " rational roots, " << equal_to_after << " roots equal to the instant");
+  CHECK(mismatches == 0);
+  CHECK(rational_roots > 500);
+  CHECK(equal_to_after > 50);
+}
+
+// The modular test may answer "not known" for a square-free polynomial, but
+// never "square-free" for one with a repeated root.
+TEST_CASE("the modular square-freeness test never accepts a repeated root", "[roots][cgal]") {
+  kvd::testing::Random_polys rnd(11);
+  int accepted = 0, square_free = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const ZPoly p = rnd.below(2) ? rnd.repeated_factors(2 + static_cast<int>(rnd.below(11)), 1 + rnd.below(60))
+                                 : rnd.dense(2 + static_cast<int>(rnd.below(11)), 1 + rnd.below(60));
+    const Cgal_roots cgal(p);
+    bool repeated = false;
+    for (std::size_t j = 0; j < cgal.size(); ++j) repeated |= cgal.multiplicity(j) > 1;
+    // CGAL sees real roots only: a repeated complex pair shows as gcd(p, p') != 1.
+    repeated |= kvd::zpoly::degree(kvd::zpoly::gcd(p, kvd::zpoly::derivative(p))) > 0;
+    const bool says = kvd::zpoly::certainly_square_free(p);
+    square_free += !repeated;
+    accepted += says;
+    if (says && repeated) FAIL("certainly_square_free accepted [" << show(p) << "]");
+  }
+  WARN(square_free << " square-free of 2000, " << accepted << " accepted");
+  CHECK(accepted > square_free * 9 / 10);
+}

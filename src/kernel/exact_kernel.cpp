@@ -1,5 +1,7 @@
 #include "kvd/kernel/exact_kernel.hpp"
 
+#include <vector>
+
 #include "kvd/detail/kernel/descartes.hpp"
 #include "interval.hpp"
 
@@ -30,6 +32,29 @@ bool equal_algebraic(const Exact_time& a, const Exact_time& b) {
   const mpq_class& lo = a.lower() < b.lower() ? a.lower() : b.lower();
   const mpq_class& hi = a.upper() > b.upper() ? a.upper() : b.upper();
   return zpoly::sign_at(g, lo) != zpoly::sign_at(g, hi);
+}
+
+// The real roots of the square-free quadratic q in increasing order, in
+// closed form: (-b -+ sqrt(D)) / 2a, rational when D is a square; otherwise
+// each isolated by the integer square root s = floor(sqrt(D)), with
+// s < sqrt(D) < s + 1 (the ends are rational, so not roots, and the two
+// intervals are disjoint since s >= 1).
+std::vector<Exact_time> quadratic_roots(const zpoly::ZPoly& q) {
+  const int sa = sgn(q[2]);  // roots and their order are those of sa * q
+  const mpz_class a = sa * q[2], b = sa * q[1], c = sa * q[0];
+  const mpz_class d = b * b - 4 * a * c;
+  if (d < 0) return {};
+  const mpz_class two_a = 2 * a;
+  const auto ratio = [&](const mpz_class& n) {
+    mpq_class r(n, two_a);
+    r.canonicalize();
+    return r;
+  };
+  mpz_class s;
+  mpz_sqrt(s.get_mpz_t(), d.get_mpz_t());
+  if (s * s == d) return {Exact_time(ratio(-b - s)), Exact_time(ratio(-b + s))};
+  return {Exact_time::algebraic(q, ratio(-b - s - 1), ratio(-b - s)),
+          Exact_time::algebraic(q, ratio(-b + s), ratio(-b + s + 1))};
 }
 
 }  // namespace
@@ -90,8 +115,26 @@ int Exact_kernel::sign_after(const Poly& p, const Time& t) const {
 }
 
 std::optional<Exact_time> Exact_kernel::next_root(const Poly& p, const Time& after) const {
+  if (p.degree() == 1) {  // most certificates of linear motions: no integer conversion
+    const mpq_class r = -p.coefficients()[0] / p.coefficients()[1];
+    if (after.is_rational() ? r <= after.rational() : r <= after.lower()) return std::nullopt;
+    if (after.is_rational() || r >= after.upper()) return Exact_time(r);
+    return after.compare_refining(r) < 0 ? std::optional(Exact_time(r)) : std::nullopt;
+  }
   const zpoly::ZPoly q = zpoly::odd_part(zpoly::to_zpoly(p));
   if (zpoly::degree(q) < 1) return std::nullopt;
+  // The first root r of q (every root simple, a sign change) with r > after.
+  const auto first_after = [&](const std::vector<Exact_time>& ascending) -> std::optional<Exact_time> {
+    for (const Exact_time& r : ascending) {
+      if (after.upper() < r.lower()) return r;  // the intervals decide, with no refinement
+      if (r.upper() <= after.lower()) continue;
+      // Against a rational, one exact sign of r's polynomial decides.
+      if ((after.is_rational() ? r.compare_refining(after.rational()) : compare(r, after)) > 0) return r;
+    }
+    return std::nullopt;
+  };
+  if (zpoly::degree(q) == 1) return first_after({Exact_time(mpq_class(-q[0], q[1]))});
+  if (zpoly::degree(q) == 2) return first_after(quadratic_roots(q));
   const mpq_class bound = zpoly::root_bound(q);
   const mpq_class lo = after.lower();  // a copy: comparing with `after` may refine it
   if (!(lo < bound)) return std::nullopt;

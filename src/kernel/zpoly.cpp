@@ -107,12 +107,15 @@ ZPoly gcd(ZPoly a, ZPoly b) {
   return a;
 }
 
-ZPoly square_free(const ZPoly& p) { return div_exact(p, gcd(p, derivative(p))); }
+ZPoly square_free(const ZPoly& p) {
+  if (certainly_square_free(p)) return p;
+  return div_exact(p, gcd(p, derivative(p)));
+}
 
 ZPoly odd_part(const ZPoly& p0) {
   ZPoly p = p0;
   make_primitive(p);
-  if (degree(p) <= 0) return p;
+  if (degree(p) <= 0 || certainly_square_free(p)) return p;
   ZPoly dp = derivative(p);
   ZPoly c = gcd(p, dp);
   if (degree(c) == 0) return p;  // already square-free
@@ -165,8 +168,7 @@ ZPoly compose_linear(const ZPoly& p, const mpz_class& a, const mpz_class& b, con
   return r;
 }
 
-// Sign variations, zeros skipped.
-static int variations(const ZPoly& p) {
+int variations(const ZPoly& p) {
   int v = 0, last = 0;
   for (const auto& c : p) {
     const int s = sgn(c);
@@ -177,8 +179,7 @@ static int variations(const ZPoly& p) {
   return v;
 }
 
-// In place: q(t) -> q(t + 1) (Taylor shift, O(n^2) additions).
-static void taylor_shift_one(ZPoly& q) {
+void taylor_shift_one(ZPoly& q) {
   const std::size_t n = q.size();
   for (std::size_t i = 0; i + 1 < n; ++i)
     for (std::size_t j = n - 1; j-- > i;) q[j] += q[j + 1];
@@ -199,17 +200,19 @@ int descartes_bound(const ZPoly& p, const mpq_class& lo, const mpq_class& hi) {
 
 mpq_class root_bound(const ZPoly& p) {
   assert(degree(p) >= 1);
-  mpz_class lead = abs(p.back());
-  mpz_class m = 0;
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-    mpz_class q;
-    mpz_cdiv_q(q.get_mpz_t(), mpz_class(abs(p[i])).get_mpz_t(), lead.get_mpz_t());
-    if (q > m) m = q;
+  // Fujiwara: every root z has |z| <= 2 max_i |c_(n-i) / c_n|^(1/i). With
+  // b(x) the bit length of |x|, |c_(n-i) / c_n| < 2^(b(c_(n-i)) - b(c_n) + 1),
+  // so |z| < 2^(B + 1) for B the largest ceil((b(c_(n-i)) - b(c_n) + 1) / i).
+  const long n = degree(p);
+  const long lead_bits = static_cast<long>(mpz_sizeinbase(p.back().get_mpz_t(), 2));
+  long exponent = 0;
+  for (long i = 1; i <= n; ++i) {
+    const mpz_class& c = p[static_cast<std::size_t>(n - i)];
+    if (c == 0) continue;
+    const long excess = static_cast<long>(mpz_sizeinbase(c.get_mpz_t(), 2)) - lead_bits + 1;
+    if (excess > 0) exponent = std::max(exponent, (excess + i - 1) / i);
   }
-  // |root| < 1 + max |c_i / c_n| <= 1 + m <= 2^k.
-  mpz_class bound = 1;
-  while (bound < m + 1) bound *= 2;
-  return mpq_class(bound);
+  return mpq_class(mpz_class(1) << static_cast<mp_bitcnt_t>(exponent + 1));
 }
 
 }  // namespace kvd::zpoly

@@ -32,6 +32,9 @@ ZPoly mul(const ZPoly& a, const ZPoly& b);
 ZPoly div_exact(const ZPoly& a, const ZPoly& b);
 // Primitive gcd with positive leading coefficient; gcd(0, 0) = 0.
 ZPoly gcd(ZPoly a, ZPoly b);
+// True only if p has no repeated root: a constant gcd(p, p') modulo a prime
+// (src/kernel/zpoly_modular.cpp). False proves nothing.
+bool certainly_square_free(const ZPoly& p);
 // p / gcd(p, p'): every root of p, each simple.
 ZPoly square_free(const ZPoly& p);
 // The product of the factors of odd multiplicity (Yun's square-free
@@ -42,12 +45,16 @@ ZPoly odd_part(const ZPoly& p);
 int sign_at(const ZPoly& p, const mpq_class& x);
 // c^n p((a + b t) / c), n = degree(p): the substitution used by Descartes' rule.
 ZPoly compose_linear(const ZPoly& p, const mpz_class& a, const mpz_class& b, const mpz_class& c);
+// The sign variations of the coefficients, zeros skipped.
+int variations(const ZPoly& p);
+// In place: p(t) -> p(t + 1) (Taylor shift, O(n^2) additions).
+void taylor_shift_one(ZPoly& p);
 // Descartes' bound on the number of roots in the open interval (lo, hi): the
 // sign variations of (1+t)^n p((lo + hi t) / (1 + t)). Exact when 0 or 1; zero
 // proves there is no root there.
 int descartes_bound(const ZPoly& p, const mpq_class& lo, const mpq_class& hi);
 // A rational strictly larger than the absolute value of every complex root
-// (Cauchy's bound, rounded up to a power of two).
+// (Fujiwara's bound, rounded up to a power of two).
 mpq_class root_bound(const ZPoly& p);
 
 }  // namespace kvd::zpoly
