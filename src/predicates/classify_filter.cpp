@@ -1,7 +1,10 @@
 #include "classify_filter.hpp"
 
 #include <array>
+#include <cstdint>
 #include <optional>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "../kernel/interval.hpp"
@@ -39,6 +42,14 @@ std::optional<Point4<Interval>> at(const Motion& m, const Interval& t) {
 
 }  // namespace
 
+struct Vertex_hash {
+  std::size_t operator()(const symbolic::Symbolic_vertex& v) const {
+    std::size_t h = static_cast<std::size_t>(v.kind);
+    for (std::size_t id : v.ids) h = h * 0x9e3779b97f4a7c15ull + id;
+    return h;
+  }
+};
+
 struct Classification_filter::State {
   const scene::Scene* scene;
   bool usable = true;  // false when some motion coefficient is too large to filter
@@ -48,11 +59,50 @@ struct Classification_filter::State {
   // in it), or none when they are too large to filter.
   std::optional<Interval> instant;
   std::optional<symbolic::Scene_geometry<Interval>> positions;
+  // The last rational instant asked for, and its interval: most calls ask
+  // again at the same instant, and converting it is not free.
+  std::optional<mpq_class> last_rational;
+  std::optional<Interval> last_enclosure;
+  // The planes and derived points at the current instant, computed once:
+  // a plane is valid while its stamp equals `epoch`, so that a new instant
+  // costs nothing in the number of planes.
+  std::uint64_t epoch = 1;
+  std::array<std::vector<std::pair<std::uint64_t, Plane4<Interval>>>, 3> planes;  // by Symbolic_plane::Kind
+  std::unordered_map<symbolic::Symbolic_vertex, Point4<Interval>, Vertex_hash> points;
+
+  std::optional<Interval> enclose(const Exact_time& t) {
+    if (!t.is_rational()) return filter::enclose(t);
+    if (!last_rational || *last_rational != t.rational()) {
+      last_rational = t.rational();
+      last_enclosure = filter::enclose(t.rational());
+    }
+    return last_enclosure;
+  }
+
+  // Inside a Rounding_scope.
+  const Plane4<Interval>& plane(const symbolic::Symbolic_plane& p) {
+    auto& of_kind = planes[static_cast<std::size_t>(p.kind)];
+    if (of_kind.size() <= p.id) of_kind.resize(p.id + 1);
+    auto& [stamp, plane] = of_kind[p.id];
+    if (stamp != epoch) {
+      plane = positions->plane(p);
+      stamp = epoch;
+    }
+    return plane;
+  }
+  const Point4<Interval>& point(const symbolic::Symbolic_vertex& v) {
+    if (v.kind == symbolic::Symbolic_vertex::Kind::endpoint) return positions->vertex(v.ids[0]);
+    auto it = points.find(v);
+    if (it == points.end()) it = points.emplace(v, positions->point(v)).first;
+    return it->second;
+  }
 
   void move_to(const Interval& t) {
     if (instant && instant->lower() == t.lower() && instant->upper() == t.upper()) return;
     instant = t;
     positions.reset();
+    ++epoch;
+    points.clear();
     const filter::Rounding_scope upward;
     std::vector<Point4<Interval>> v;
     v.reserve(vertices.size());
@@ -89,13 +139,13 @@ int Classification_filter::side(const symbolic::Symbolic_vertex& v, const symbol
                                 const Exact_time& t) {
   State& s = *state_;
   if (!s.usable) return 0;
-  const auto when = filter::enclose(t);
+  const auto when = s.enclose(t);
   if (!when) return 0;
   s.move_to(*when);
   if (!s.positions) return 0;
   const filter::Rounding_scope upward;
-  const Point4<Interval> x = s.positions->point(v);
-  const int value = filter::sign(dot(s.positions->plane(p), x));
+  const Point4<Interval>& x = s.point(v);
+  const int value = filter::sign(dot(s.plane(p), x));
   // A scene vertex has W > 0 (scene_geometry.hpp); a derived one needs its sign.
   const int w = v.kind == symbolic::Symbolic_vertex::Kind::endpoint ? 1 : filter::sign(x[3]);
   return value * w;
