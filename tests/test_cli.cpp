@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -283,6 +284,47 @@ TEST_CASE("kvd bench update compares the local update with the rebuild over N, o
   CHECK(csv.find("20,\"rebuild\"") == std::string::npos);
   CHECK(csv.find("20,\"local, double\"") != std::string::npos);
   CHECK(csv.find("upkeep all") == std::string::npos);
+}
+
+TEST_CASE("kvd bench cost compares exact with double and counts the filter's stages, or writes nothing on bad input",
+          "[cli][bench]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/bench-cost";
+  const std::string to = " --out " + out;
+  std::remove((out + "/cost.md").c_str());
+  std::remove((out + "/cost.csv").c_str());
+  CHECK(run("bench cost --help").out.find("usage: kvd bench cost") != std::string::npos);
+  CHECK(run("bench cost --sizes 0" + to).status == 2);
+  CHECK(run("bench cost --repeats 0" + to).status == 2);
+  CHECK(run("bench cost --repeats x" + to).status == 2);
+  CHECK(!std::ifstream(out + "/cost.md").good());
+  const Run r = run("bench cost --sizes 20,10 --events 20 --repeats 1" + to);
+  REQUIRE(r.status == 0);
+  std::ifstream f(out + "/cost.md");
+  const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  CHECK(md.find("| 10 | ") < md.find("| 20 | "));
+  // One row per size; the columns are named in the header.
+  std::ifstream c(out + "/cost.csv");
+  std::string header, line;
+  std::getline(c, header);
+  std::vector<std::string> names;
+  for (std::stringstream hs(header); std::getline(hs, line, ',');) names.push_back(line);
+  int rows = 0;
+  while (std::getline(c, line)) {
+    ++rows;
+    std::map<std::string, std::string> v;
+    std::stringstream ls(line);
+    for (const std::string& n : names) std::getline(ls, v[n], ',');
+    INFO(line);
+    // Linear motions make certificate polynomials of degree 1 (proofs/degree-bounds.md).
+    CHECK(std::stol(v["polynomials"]) > 0);
+    CHECK(v["linear_polynomials"] == v["polynomials"]);
+    CHECK(v["max_degree"] == "1");
+    // The filter decides classifications of the build.
+    CHECK(std::stol(v["build_classify_filter"]) > 0);
+    CHECK(std::stol(v["events"]) >= 20);
+    CHECK(v["double_failure"] == "\"\"");
+  }
+  CHECK(rows == 2);
 }
 
 namespace {

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -15,6 +14,7 @@
 #include "gnuplot.hpp"
 #include "kvd/kinetic/differential.hpp"
 #include "report.hpp"
+#include "sweep.hpp"
 
 namespace kvd::bench {
 
@@ -222,11 +222,11 @@ int accuracy(cli::Args& args) {
     else args.unknown(a);
   }
   // Check every name before the first run, so bad input costs nothing.
-  if (out.find('\'') != std::string::npos) throw cli::Usage_error("kvd bench accuracy: --out must not contain a quote");
+  check_out("accuracy", out);
   for (const std::string& k : kernels) cli::with_kernel("bench accuracy", k, [](const auto&) { return 0; });
   std::vector<scene::Scene> loaded;
   for (const std::string& s : scenes) loaded.push_back(scene::load_scene(data + "/" + s + ".json"));
-  std::filesystem::create_directories(out);
+  make_out("accuracy", out);
 
   std::vector<Row> rows;
   for (std::size_t i = 0; i < scenes.size(); ++i) {

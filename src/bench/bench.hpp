@@ -12,5 +12,7 @@ int thesis(cli::Args& args);
 // kvd bench update: the local update against the rebuild, with and without
 // kept certificates.
 int update(cli::Args& args);
+// kvd bench cost: exact against double, the filter's statistics, next_root.
+int cost(cli::Args& args);
 
 }  // namespace kvd::bench

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "report.hpp"
 
 namespace kvd::bench {
 
@@ -24,6 +25,35 @@ bool run_gnuplot(const std::string& suite, const std::string& script_path, const
     return false;
   }
   return true;
+}
+
+std::string gnuplot_script(const Line_plot& p) {
+  std::string tics;
+  for (std::size_t n : p.sizes) tics += (tics.empty() ? "" : ", ") + std::to_string(n);
+  // A margin of a quarter of a doubling either side: autoscale on a log axis
+  // would round the range out to powers of ten.
+  const std::string range = "[" + cli::fixed(static_cast<double>(p.sizes.front()) / 1.2, 1) + ":" +
+                            cli::fixed(static_cast<double>(p.sizes.back()) * 1.2, 1) + "]";
+  std::string out = "set terminal svg size 760,480 dynamic font 'sans,12'\n"
+                    "set output '" + p.svg + "'\n"
+                    "set datafile missing 'NaN'\n" +
+                    (p.log_y ? "set logscale xy\n" : "set logscale x\nset yrange [0:*]\n") +
+                    "set xtics (" + tics + ")\n"
+                    "set xrange " + range + "\n"
+                    "set grid\n"
+                    "set key top left\n"
+                    "set title '" + p.title + "'\n"
+                    "set xlabel 'triangles (log)'\n"
+                    "set ylabel '" + p.ylabel + "'\n"
+                    "plot";
+  int column = 2;
+  for (const std::string& title : p.series) {
+    out += std::string(column > 2 ? "," : "") + " '" + p.data + "' using 1:" + std::to_string(column) +
+           " with linespoints pt " + std::to_string(column - 1) + " ps 1.2 title '" + title + "'";
+    ++column;
+  }
+  if (p.reference) out += ", " + cli::approx(*p.reference) + " with lines dt 2 lc 'gray' title '" + p.reference_title + "'";
+  return out + "\n";
 }
 
 }  // namespace kvd::bench

@@ -1,6 +1,7 @@
 #include "sweep.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "cli.hpp"
 #include "kvd/scene/generators.hpp"
@@ -34,6 +35,17 @@ scene::Scene generated(const std::string& suite, const std::string& family, std:
     throw cli::Usage_error("kvd bench " + suite + ": generating " + family + " " + std::to_string(size) + ": " +
                            e.what());
   }
+}
+
+void check_out(const std::string& suite, const std::string& dir) {
+  if (dir.find('\'') != std::string::npos) throw cli::Usage_error("kvd bench " + suite + ": --out must not contain a quote");
+}
+
+void make_out(const std::string& suite, const std::string& dir) {
+  check_out(suite, dir);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw cli::Usage_error("kvd bench " + suite + ": cannot create " + dir + " (" + ec.message() + ")");
 }
 
 }  // namespace kvd::bench

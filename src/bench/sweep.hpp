@@ -1,5 +1,5 @@
-// What the bench suites that sweep the number of triangles share: the
-// --sizes option, and the scenes generated for a size as `kvd generate
+// What the bench suites share: the --out folder; and for those that sweep
+// the number of triangles, the --sizes option and the scenes generated for a size as `kvd generate
 // FAMILY --triangles N --moving F --degree D --seed 1` makes them.
 #pragma once
 
@@ -18,5 +18,11 @@ std::vector<std::size_t> sizes_option(const std::string& suite, const std::strin
 // The uniform-scale or uniform-density scene of `size` triangles, seed 1.
 scene::Scene generated(const std::string& suite, const std::string& family, std::size_t size, const scene::Q& moving,
                        int degree);
+
+// --out DIR: a Usage_error naming `kvd bench SUITE` when DIR holds a quote
+// (the gnuplot scripts quote it); check before the first run.
+void check_out(const std::string& suite, const std::string& dir);
+// Creates DIR and its parents; a Usage_error naming the suite when it cannot.
+void make_out(const std::string& suite, const std::string& dir);
 
 }  // namespace kvd::bench

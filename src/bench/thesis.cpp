@@ -6,7 +6,6 @@
 // values beside the thesis's), thesis.csv (one row per measurement) and,
 // when gnuplot is installed, thesis-construction.svg and thesis-update.svg.
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 
 #include "bench.hpp"
@@ -94,7 +93,7 @@ int thesis(cli::Args& args) {
   }
   // Check every name and load or generate every scene before the first
   // measurement, so bad input costs nothing and writes nothing.
-  if (c.out.find('\'') != std::string::npos) throw cli::Usage_error("kvd bench thesis: --out must not contain a quote");
+  check_out("thesis", c.out);
   if (c.kernels.empty()) throw cli::Usage_error("kvd bench thesis: --kernels needs at least one kernel");
   for (const std::string& k : c.kernels) cli::with_kernel("bench thesis", k, [](const auto&) { return 0; });
   std::vector<Sized_scenes> scenes;
@@ -108,9 +107,7 @@ int thesis(cli::Args& args) {
     s.still = generated("thesis", s.family, s.size, 0, 1);
     s.quadratic = generated("thesis", s.family, s.size, 1, 2);
   }
-  std::error_code ec;
-  std::filesystem::create_directories(c.out, ec);
-  if (ec) throw cli::Usage_error("kvd bench thesis: cannot create " + c.out + " (" + ec.message() + ")");
+  make_out("thesis", c.out);
 
   Results r;
   for (const Sized_scenes& s : scenes) {

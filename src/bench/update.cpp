@@ -7,7 +7,6 @@
 
 #include <sys/resource.h>
 
-#include <filesystem>
 #include <iostream>
 
 #include "bench.hpp"
@@ -118,10 +117,7 @@ int update(cli::Args& args) {
     else if (a == "--out") c.out = args.value(a);
     else args.unknown(a);
   }
-  if (c.out.find('\'') != std::string::npos) throw cli::Usage_error("kvd bench update: --out must not contain a quote");
-  std::error_code ec;
-  std::filesystem::create_directories(c.out, ec);
-  if (ec) throw cli::Usage_error("kvd bench update: cannot create " + c.out + " (" + ec.message() + ")");
+  make_out("update", c.out);
 
   std::vector<Size> sizes;
   bool all_same = true;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gnuplot.hpp"
 #include "update.hpp"
 
 namespace kvd::bench::update_suite {
@@ -158,31 +159,14 @@ std::string plot_data(const std::vector<Size>& sizes) {
 }
 
 std::string gnuplot_script(const Config& c) {
-  std::string tics;
-  for (std::size_t n : c.sizes) tics += (tics.empty() ? "" : ", ") + std::to_string(n);
-  // A margin of a quarter of a doubling either side: autoscale on a log axis
-  // would round the range out to powers of ten.
-  const std::string range = "[" + cli::fixed(static_cast<double>(c.sizes.front()) / 1.2, 1) + ":" +
-                            cli::fixed(static_cast<double>(c.sizes.back()) * 1.2, 1) + "]";
-  std::string out = "set terminal svg size 760,480 dynamic font 'sans,12'\n"
-                    "set output '" + c.out + "/update.svg'\n"
-                    "set datafile missing 'NaN'\n"
-                    "set logscale xy\n"
-                    "set xtics (" + tics + ")\n"
-                    "set xrange " + range + "\n"
-                    "set grid\n"
-                    "set key top left\n"
-                    "set title 'Mean update per batch, uniform-scale, all moving, one run'\n"
-                    "set xlabel 'triangles (log)'\n"
-                    "set ylabel 'ms per batch (log)'\n"
-                    "plot";
-  int column = 2;
-  for (const char* conf : plotted_configurations) {
-    out += std::string(column > 2 ? "," : "") + " '" + c.out + "/update-plot.dat' using 1:" + std::to_string(column) +
-           " with linespoints pt " + std::to_string(column - 1) + " ps 1.2 title '" + conf + "'";
-    ++column;
-  }
-  return out + "\n";
+  Line_plot p;
+  p.svg = c.out + "/update.svg";
+  p.data = c.out + "/update-plot.dat";
+  p.title = "Mean update per batch, uniform-scale, all moving, one run";
+  p.ylabel = "ms per batch (log)";
+  p.series.assign(std::begin(plotted_configurations), std::end(plotted_configurations));
+  p.sizes = c.sizes;
+  return bench::gnuplot_script(p);
 }
 
 }  // namespace kvd::bench::update_suite

@@ -5,12 +5,13 @@ comes out the same in a fresh run, and the pages copy the committed tables.
 Usage: reproduce.py KVD SOURCE_DIR WORK_DIR
 
 Re-runs the small cases (the whole accuracy suite, the thesis suite at 25
-triangles, the update suite at 100 triangles), compares each fresh CSV row with the
+triangles, the update suite at 100 triangles, the cost suite at 25, and
+kvd_bench_next_root as committed when it is built beside kvd), compares each fresh CSV row with the
 committed row of the same key, number by number, and runs splice.py --check.
 Timing quantities differ from run to run and machine to machine and are
 skipped: names ending in _ms or starting with ms_, seconds, the tree and
 certificate shares of the update time, and anything named for memory (rss),
-a ratio, a speed-up or a fitted exponent. Standard library only.
+a ratio, a speed-up or a fitted exponent; microseconds (_us). Standard library only.
 """
 import csv
 import pathlib
@@ -18,7 +19,7 @@ import re
 import subprocess
 import sys
 
-TIMING = re.compile(r"(_ms$|^ms_|seconds|^tree_share$|^certificate_share$|rss|ratio|speedup|exponent)")
+TIMING = re.compile(r"(_ms$|^ms_|_us$|seconds|^tree_share$|^certificate_share$|rss|ratio|speedup|exponent)")
 
 
 def rows(path, key):
@@ -61,6 +62,15 @@ def main():
                         ["figure", "family", "size", "kernel", "quantity"], long_form=True)
     run([kvd, "bench", "update", "--sizes", "100", "--out", str(work / "update")])
     problems += compare("update.csv", bench / "update.csv", work / "update" / "update.csv", ["triangles", "configuration"])
+    run([kvd, "bench", "cost", "--sizes", "25", "--repeats", "1", "--out", str(work / "cost")])
+    problems += compare("cost.csv", bench / "cost.csv", work / "cost" / "cost.csv", ["triangles"])
+    next_root = pathlib.Path(kvd).parent / "kvd_bench_next_root"
+    if next_root.exists():
+        (work / "next-root").mkdir(parents=True, exist_ok=True)
+        run([str(next_root), "--degrees", "1,2,4,6,8", "--bits", "64,200", "--count", "1000", "--out",
+             str(work / "next-root")])
+        problems += compare("next-root.csv", bench / "next-root.csv", work / "next-root" / "next-root.csv",
+                            ["bits", "degree"])
     if subprocess.run([sys.executable, str(bench / "splice.py"), "--check"]).returncode != 0:
         problems.append("a page shows a table that differs from data/bench/ (splice.py --check)")
     for p in problems:
