@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "kernels.hpp"
+#include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/tree/build.hpp"
 #include "kvd/tree/compare.hpp"
@@ -152,4 +153,21 @@ TEST_CASE("every bundled scene builds the same tree with and without the filter"
       CHECK(on.statistics().classify.filter + on.statistics().classify.exact == off.statistics().classify.exact);
     }
   }
+}
+
+TEST_CASE("the certificate walks are decided by the filter where it is on, with the same run", "[filter]") {
+  const scene::Scene s = scene::load_scene(std::string(KVD_SOURCE_DIR) + "/data/uniform-scale-25.json");
+  kinetic::Options o;
+  o.max_events = 100;
+  o.validate = kinetic::Validation::none;
+  const Exact_kernel on(true), off(false);
+  const auto a = kinetic::simulate(on, s, o), b = kinetic::simulate(off, s, o);
+  CHECK(a.structure_hash == b.structure_hash);
+  REQUIRE(a.batches.size() == b.batches.size());
+  CHECK(a.failures_by_type == b.failures_by_type);
+  for (std::size_t i = 0; i < a.batches.size(); ++i)
+    CHECK(a.batches[i].certificates_recomputed == b.batches[i].certificates_recomputed);
+  // On: the walks' signs are mostly the filter's; off: no walk is filtered.
+  CHECK(on.statistics().walk.filter > 10 * on.statistics().walk.exact);
+  CHECK(off.statistics().walk.filter + off.statistics().walk.exact == 0);
 }

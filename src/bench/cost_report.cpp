@@ -23,12 +23,14 @@ std::string csv_counts(const Stage_counts& c) {
 }
 std::string csv_stages(const Filter_statistics& f) {
   return csv_counts(f.classify) + "," + std::to_string(f.sign_at.filter) + "," + std::to_string(f.sign_at.exact) +
-         "," + std::to_string(f.compare.filter) + "," + std::to_string(f.compare.exact);
+         "," + std::to_string(f.compare.filter) + "," + std::to_string(f.compare.exact) + "," +
+         std::to_string(f.walk.filter) + "," + std::to_string(f.walk.exact);
 }
 std::string csv_stage_header(const std::string& run) {
   std::string out;
   for (const char* q : {"classify_filter", "classify_exact", "classify_after", "classify_perturbation",
-                        "sign_at_filter", "sign_at_exact", "compare_filter", "compare_exact"})
+                        "sign_at_filter", "sign_at_exact", "compare_filter", "compare_exact", "walk_filter",
+                        "walk_exact"})
     out += "," + run + "_" + q;
   return out;
 }
@@ -78,18 +80,18 @@ std::string markdown(const Config& c, const std::vector<Size>& sizes, bool plott
   out += "\n## Filter statistics\n\n"
          "Which stage of the exact kernel decided, in one exact build and one exact simulation: a classification "
          "by the interval filter, by exact arithmetic after the filter could not tell, or, its value being zero, "
-         "by the derivative or the perturbation rule; `sign_at` and the comparison of two algebraic instants by "
-         "the filter / exactly.\n\n"
+         "by the derivative or the perturbation rule; `sign_at`, the comparison of two algebraic instants, and the "
+         "signs of the certificate walks (a wall's side, the order of two walls) by the filter / exactly.\n\n"
          "| triangles | run | classifications | by the filter | exactly | derivative | perturbation | filter share | "
-         "sign_at: filter / exact | compare: filter / exact |\n"
-         "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "sign_at: filter / exact | compare: filter / exact | walks: filter / exact |\n"
+         "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Size& s : sizes)
     for (const auto& [run, f] : {std::pair{"build", &s.build_stages}, std::pair{"simulation", &s.simulate_stages}}) {
       const Stage_counts& k = f->classify;
       out += "| " + std::to_string(s.triangles) + " | " + run + " | " + std::to_string(decided(k)) + " | " +
              std::to_string(k.filter) + " | " + std::to_string(k.exact) + " | " + std::to_string(k.after) + " | " +
              std::to_string(k.perturbation) + " | " + share(k.filter, decided(k)) + " | " + stages(f->sign_at) +
-             " | " + stages(f->compare) + " |\n";
+             " | " + stages(f->compare) + " | " + stages(f->walk) + " |\n";
     }
   out += "\n## next_root on certificate polynomials\n\n"
          "Every distinct certificate polynomial the exact simulation put in force, asked for its first "

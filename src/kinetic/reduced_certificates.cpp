@@ -14,6 +14,8 @@
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/detail/kinetic/reduced_upkeep.hpp"
 #include "kvd/detail/kinetic/positive.hpp"
+#include "kvd/kernel/exact_kernel.hpp"
+#include "wall_filter.hpp"
 
 namespace kvd::kinetic {
 
@@ -39,7 +41,10 @@ class Reduced_maker<K>::Impl {
 
 public:
   Impl(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now)
-      : c_(c), t_(t), now_(now), s_(c.motion().scene()), y_{{P(), P(FT(1)), P(), P()}} {}
+      : c_(c), t_(t), now_(now), s_(c.motion().scene()), y_{{P(), P(FT(1)), P(), P()}} {
+    if constexpr (std::is_same_v<K, Exact_kernel>)
+      if (c.kernel().filtered()) filter_ = std::make_unique<Wall_filter>(now);
+  }
 
   std::vector<Certificate<P>> of_node(int n, const std::vector<int>& path) {
     at_ = n;
@@ -63,7 +68,7 @@ private:
   // A P-wall (along y) is a cut of the tree or an intersection cut through
   // an intersection point; E- and T-walls are neither.
   struct Wall {
-    Plane4<P> plane;
+    const Plane4<P>* plane;  // the classifier's, or p_cuts_': they outlive the walk
     Spec spec;
     std::optional<SP> cut{};
     std::optional<SV> through{};
@@ -85,12 +90,12 @@ private:
     for (int a : *path_) {
       const SP& cut = node(a).cut;
       switch (cut.kind) {
-        case SP::Kind::P: p_walls.push_back({c_.plane_poly(cut), {Certificate_type::VV, v, cut}, cut}); break;
+        case SP::Kind::P: p_walls.push_back({&c_.plane_poly(cut), {Certificate_type::VV, v, cut}, cut}); break;
         case SP::Kind::E:
-          e_walls.push_back({c_.plane_poly(cut), {Certificate_type::VE, v, cut}});
-          for (const SV& s : intersection_walls(node(a))) p_walls.push_back({p_cut(s), {Certificate_type::IV, s, pv}, {}, s});
+          e_walls.push_back({&c_.plane_poly(cut), {Certificate_type::VE, v, cut}});
+          for (const SV& s : intersection_walls(node(a))) p_walls.push_back({&p_cut(s), {Certificate_type::IV, s, pv}, {}, s});
           break;
-        case SP::Kind::T: t_walls.push_back({c_.plane_poly(cut), {Certificate_type::VT, v, cut}}); break;
+        case SP::Kind::T: t_walls.push_back({&c_.plane_poly(cut), {Certificate_type::VT, v, cut}}); break;
       }
     }
     const Point4<P>& at = c_.point_poly(v);
@@ -109,14 +114,14 @@ private:
       std::vector<Wall> p_walls;
       for (int a : *path_) {
         const SP& above = node(a).cut;
-        if (above.kind == SP::Kind::P) p_walls.push_back({c_.plane_poly(above), {Certificate_type::IV, end, above}, above});
+        if (above.kind == SP::Kind::P) p_walls.push_back({&c_.plane_poly(above), {Certificate_type::IV, end, above}, above});
         if (above.kind != SP::Kind::E) continue;
         for (const SV& s : intersection_walls(node(a)))
-          p_walls.push_back({p_cut(s), {Certificate_type::II, end, std::nullopt, s}, {}, s});
+          p_walls.push_back({&p_cut(s), {Certificate_type::II, end, std::nullopt, s}, {}, s});
       }
       const SV& other = end == f.a ? f.b : f.a;
       if (other.kind == SV::Kind::intersection)
-        p_walls.push_back({p_cut(other), {Certificate_type::II, end, std::nullopt, other}, {}, other});
+        p_walls.push_back({&p_cut(other), {Certificate_type::II, end, std::nullopt, other}, {}, other});
       nearest(c_.position(end), y_, p_walls, end_of_walk(y_, p_pencil()));
     }
   }
@@ -144,6 +149,15 @@ private:
     if (d.is_zero()) d = c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()});
     const SP against{SP::Kind::E, s.ids[1]};
     add({{Certificate_type::ET, s, against}, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, against}});
+  }
+
+  // Which stage decided a sign of the walk (the exact kernel's statistics).
+  void count(bool by_filter) const {
+    if constexpr (std::is_same_v<K, Exact_kernel>) {
+      if (!filter_) return;
+      Stage_counts& n = c_.kernel().statistics().walk;
+      ++(by_filter ? n.filter : n.exact);
+    }
   }
 
   // The implicit P-cut through an intersection point: x ∨ z ∨ s, as SP(V).
@@ -175,42 +189,78 @@ private:
   // to -∞ and on from +∞, each until its end (proofs/certificates.md, 3).
   void nearest(const Point4<P>& v, const Point4<P>& d, const std::vector<Wall>& walls, End end) {
     const int wv = v[3].is_zero() ? 1 : c_.lex_sign(v[3], now_);
+    if constexpr (std::is_same_v<K, Exact_kernel>) {
+      if (filter_) {
+        filter_->set_point(v, wv < 0);
+        filter_->set_direction(d);
+      }
+    }
     struct Hit {
       const Wall* wall;
-      P f, g;
-      int sg, side;  // side: the sign of μ
+      std::optional<P> f{}, g{};  // made only when the filter's bounds cannot decide
+      std::optional<Bounds> f_bounds{}, g_bounds{};
+      int sg = 0, side = 0;  // side: the sign of μ
+    };
+    const auto f_of = [&](Hit& h) -> const P& {
+      if (!h.f) h.f = wv < 0 ? P(-dot(*h.wall->plane, v)) : dot(*h.wall->plane, v);
+      return *h.f;
+    };
+    const auto g_of = [&](Hit& h) -> const P& {
+      if (!h.g) h.g = dot(*h.wall->plane, d);
+      return *h.g;
+    };
+    // The sign of the bounds, or else of the polynomial just after now.
+    const auto sign = [&](const std::optional<Bounds>& b, auto&& exact) {
+      const int s = Wall_filter::sign(b);
+      count(s != 0);
+      return s != 0 ? s : c_.lex_sign(exact(), now_);
     };
     // sign(μ_a - μ_b) = sign(f_b g_a - f_a g_b) · sign(g_a g_b)
-    auto compare = [&](const Hit& a, const Hit& b) { return c_.lex_sign(b.f * a.g - a.f * b.g, now_) * a.sg * b.sg; };
+    auto compare = [&](Hit& a, Hit& b) {
+      int s = Wall_filter::cross_sign(a.f_bounds, a.g_bounds, b.f_bounds, b.g_bounds);
+      count(s != 0);
+      if (s == 0) s = c_.lex_sign(f_of(b) * g_of(a) - f_of(a) * g_of(b), now_);
+      return s * a.sg * b.sg;
+    };
     std::vector<Hit> hits;
     for (const Wall& w : walls) {
-      P f = dot(w.plane, v);
-      if (wv < 0) f = -f;
-      P g = dot(w.plane, d);
-      const int sg = c_.lex_sign(g, now_);
+      Hit h{&w};
+      if constexpr (std::is_same_v<K, Exact_kernel>) {
+        if (filter_) {
+          h.f_bounds = filter_->at_point(*w.plane);
+          h.g_bounds = filter_->at_direction(*w.plane);
+        }
+      }
+      const int sg = sign(h.g_bounds, [&]() -> const P& { return g_of(h); });
       if (sg == 0) continue;
-      const int side = -c_.lex_sign(f, now_) * sg;
-      if (side == 0) emit(w.spec);
-      else hits.push_back({&w, std::move(f), std::move(g), sg, side});
+      const int side = -sign(h.f_bounds, [&]() -> const P& { return f_of(h); }) * sg;
+      if (side == 0) {
+        emit(w.spec);
+        continue;
+      }
+      h.sg = sg;
+      h.side = side;
+      hits.push_back(std::move(h));
     }
     // The end of the walk at a point, as a hit: μ_end = -v_W / d_W.
     std::optional<Hit> stop;
     if (end == End::at_point) {
       const int sg = c_.lex_sign(d[3], now_);
-      stop = Hit{nullptr, wv < 0 ? P(-v[3]) : v[3], d[3], sg, -c_.lex_sign(v[3], now_) * wv * sg};
+      stop = Hit{nullptr, wv < 0 ? P(-v[3]) : v[3], d[3], std::nullopt, std::nullopt, sg,
+                 -c_.lex_sign(v[3], now_) * wv * sg};
     }
     for (int dir : {-1, +1}) {
       // The walk in direction dir meets first the walls on its own side
       // (nearest first), then, past ±∞, those on the other side (farthest
       // first); a wall beyond the walk's end is never met.
-      auto reached = [&](const Hit& h) {
+      auto reached = [&](Hit& h) {
         if (end == End::none) return true;
         if (end == End::at_infinity || h.side != stop->side) return h.side == dir;
         return compare(h, *stop) * dir < 0;  // before the end, on the end's own leg
       };
       for (int leg : {dir, -dir}) {
-        std::vector<const Hit*> best;
-        for (const Hit& h : hits) {
+        std::vector<Hit*> best;
+        for (Hit& h : hits) {
           if (h.side != leg || !reached(h)) continue;
           const int cmp = best.empty() ? -dir : compare(h, *best.front());
           if (cmp * dir < 0) best.assign(1, &h);
@@ -218,7 +268,7 @@ private:
         }
         for (const Hit* h : best) {
           emit(h->wall->spec);
-          for (const Hit& other : hits)
+          for (Hit& other : hits)
             if (other.side == leg && reached(other) && std::ranges::find(best, &other) == best.end())
               keep_order(*h->wall, *other.wall);
         }
@@ -269,6 +319,7 @@ private:
   int at_ = -1;                             // the node visited
   std::map<SV, Plane4<P>> p_cuts_;
   std::map<Certificate_key, Certificate<P>> made_;
+  std::unique_ptr<Wall_filter> filter_;  // the exact kernel's, when its filter is on
 };
 
 template <class K>

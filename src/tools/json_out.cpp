@@ -78,7 +78,8 @@ Json filter_json(const Exact_kernel& k) {
            {{"filter", c.filter}, {"exact", c.exact}, {"after", c.after}, {"perturbation", c.perturbation},
             {"filter_share", decimal(fixed(share, 4))}}},
           {"sign_at", pair(s.sign_at)},
-          {"compare", pair(s.compare)}};
+          {"compare", pair(s.compare)},
+          {"walk", pair(s.walk)}};
 }
 
 }  // namespace kvd::cli

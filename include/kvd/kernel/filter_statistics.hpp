@@ -14,6 +14,9 @@ struct Filter_statistics {
   Stage_counts classify;  // rule 2 by filter or exactly; rules 3 and 4 (incidence is not a sign)
   Stage_counts sign_at;   // Exact_kernel::sign_at (sign_after calls it)
   Stage_counts compare;   // Exact_kernel::compare of two algebraic instants
+  // The reduced certificates' walks (src/kinetic/wall_filter.hpp): a wall's
+  // side and the order of two walls, by the filter or by polynomials.
+  Stage_counts walk;
 };
 
 }  // namespace kvd
