@@ -61,9 +61,11 @@ std::string markdown(const Config& c, const std::vector<Size>& sizes, bool plott
   std::string out =
       "## Exact against double\n\n"
       "`kvd generate uniform-scale --triangles N --seed 1` (all moving linearly). The build of the KVD at the start, "
-      "and the whole update time per certificate failure over the first " +
+      "and the update time per certificate failure over the first " +
       std::to_string(c.events) +
-      " failures (reduced set, no validation). The runs of a size are interleaved and repeated " +
+      " failures (reduced set, no validation), as `kvd simulate` reports it: the tree, the certificates and the "
+      "queue, and the record of the tree, but not taking the failures off the queue. The runs of a size are "
+      "interleaved and repeated " +
       std::to_string(c.repeats) + " times; medians, ms.\n\n"
       "| triangles | tree nodes | build: exact | exact, no filter | double | exact / double | events (batches) | "
       "per event: exact | double | exact / double |\n"
@@ -78,7 +80,8 @@ std::string markdown(const Config& c, const std::vector<Size>& sizes, bool plott
     if (!s.double_failure.empty())
       out += "\n" + std::to_string(s.triangles) + " triangles, double: did not start (" + s.double_failure + ").\n";
   out += "\n## Filter statistics\n\n"
-         "Which stage of the exact kernel decided, in one exact build and one exact simulation: a classification "
+         "Which stage of the exact kernel decided, in one exact build and in one exact simulation (its first build "
+         "and certificates included; a build makes no certificates, hence no walks): a classification "
          "by the interval filter, by exact arithmetic after the filter could not tell, or, its value being zero, "
          "by the derivative or the perturbation rule; `sign_at`, the comparison of two algebraic instants, and the "
          "signs of the certificate walks (a wall's side, the order of two walls) by the filter / exactly.\n\n"
