@@ -59,10 +59,6 @@ const char* const cost_help =
     "\n"
     "Exit status: 0 on success, 2 on bad input.\n";
 
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // The build at the start in ms, and the tree's node count.
 template <class K>
 std::pair<double, std::size_t> build(const K& k, const scene::Scene& s) {

@@ -3,6 +3,7 @@
 // FAMILY --triangles N --moving F --degree D --seed 1` makes them.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -18,6 +19,11 @@ std::vector<std::size_t> sizes_option(const std::string& suite, const std::strin
 // The uniform-scale or uniform-density scene of `size` triangles, seed 1.
 scene::Scene generated(const std::string& suite, const std::string& family, std::size_t size, const scene::Q& moving,
                        int degree);
+
+// Milliseconds from `start` to now (steady clock).
+inline double ms_since(std::chrono::steady_clock::time_point start) {
+  return 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // --out DIR: a Usage_error naming `kvd bench SUITE` when DIR holds a quote
 // (the gnuplot scripts quote it); check before the first run.

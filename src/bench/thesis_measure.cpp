@@ -12,15 +12,12 @@
 #include "kvd/kinetic/certificate.hpp"
 #include "kvd/query/visibility.hpp"
 #include "report.hpp"
+#include "sweep.hpp"
 #include "thesis.hpp"
 
 namespace kvd::bench::thesis_suite {
 
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string label(const Where& w) {
   return "kvd bench thesis: " + w.figure + ", " + w.family + " " + std::to_string(w.size) + ", " + w.kernel + ": ";
