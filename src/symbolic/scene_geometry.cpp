@@ -7,20 +7,13 @@ namespace kvd::symbolic {
 
 namespace {
 
-template <class FT>
-Poly<FT> convert(const scene::QPoly& p) {
-  std::vector<FT> c;
-  for (const auto& q : p.coefficients()) c.push_back(from_rational<FT>(q));
-  return Poly<FT>(std::move(c));
-}
-
 // The point as polynomials over FT, negated if its W is negative at `start`
 // (a point with W identically zero, a direction, is kept as it is).
 template <class FT>
 Point4<Poly<FT>> normalized(const scene::Motion_point& p, const scene::Q& start) {
   const int sign_w = sgn(p[3](start));
   Point4<Poly<FT>> r;
-  for (int k = 0; k < 4; ++k) r[k] = convert<FT>(sign_w < 0 ? scene::QPoly(-p[k]) : p[k]);
+  for (int k = 0; k < 4; ++k) r[k] = poly_from_rational<FT>(sign_w < 0 ? scene::QPoly(-p[k]) : p[k]);
   return r;
 }
 

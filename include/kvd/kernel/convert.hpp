@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "kvd/kernel/mpfr_number.hpp"
+#include "kvd/kernel/poly.hpp"
 
 namespace kvd {
 
@@ -33,5 +34,13 @@ inline bool is_finite(const Mpfr_number& x) { return mpfr_number_p(x.get()) != 0
 inline mpq_class to_rational(const mpq_class& q) { return q; }
 inline mpq_class to_rational(double d) { return mpq_class(d); }  // mpq_set_d is exact
 mpq_class to_rational(const Mpfr_number& x);
+
+// A polynomial with rational coefficients over FT, coefficient by coefficient.
+template <class FT>
+Poly<FT> poly_from_rational(const Poly<mpq_class>& p) {
+  std::vector<FT> c;
+  for (const auto& q : p.coefficients()) c.push_back(from_rational<FT>(q));
+  return Poly<FT>(std::move(c));
+}
 
 }  // namespace kvd

@@ -1,0 +1,83 @@
+// The cylindrical BSP of possibly intersecting segments in the plane
+// (Agarwal, Erickson and Guibas, seed 003, section 2.1), at an instant.
+//
+// Segments are inserted in priority order (Segment_scene::priority_order).
+// Segment s_i is inserted into B_{i-1} in three phases:
+//  1. a vertex cut through each endpoint, into the leaf that contains it
+//     (the marked endpoint, the first written, first);
+//  2. for each earlier segment s_j that s_i crosses, in priority order of j,
+//     an intersection cut through s_i ∩ s_j into the leaf just above that
+//     point and the leaf just below it;
+//  3. an edge cut along s_i into every leaf whose cell meets the interior of
+//     s_i.
+// Point cuts (vertex and intersection cuts) are vertical; their children are
+// left and right. Edge cuts run along a segment across their cell; their
+// children are below and above. Every cell is a trapezoid: two walls from
+// point cuts (or none: unbounded) and a floor and a roof from edge cuts.
+//
+// The tree is a deterministic function of the scene, its priority and the
+// instant (t, t + δ), degenerate input included (the predicates decide every
+// sign symbolically, kvd/segments/segment_predicates.hpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kvd/segments/segment_predicates.hpp"
+
+namespace kvd::segments {
+
+enum class Cut_kind : std::uint8_t { leaf, vertex, intersection, edge };
+
+// A trapezoid: walls through points (none: unbounded that way), floor and
+// roof along segments (none: unbounded).
+struct Cell {
+  std::optional<Site_point> left, right;
+  std::optional<std::uint32_t> floor, roof;
+  friend bool operator==(const Cell&, const Cell&) = default;
+};
+
+struct Bsp_node {
+  Cut_kind kind = Cut_kind::leaf;
+  Site_point point;             // vertex and intersection cuts
+  std::uint32_t segment = 0;    // edge cuts
+  std::int32_t child[2] = {-1, -1};  // point cut: left, right; edge cut: below, above
+  Cell cell;                    // this node's region
+};
+
+struct Bsp_counts {
+  std::size_t vertex_cuts = 0, intersection_cuts = 0, edge_cuts = 0;
+  std::size_t nodes = 0, leaves = 0;
+  std::size_t height = 0;  // nodes on the longest root-to-leaf path
+};
+
+class Cylindrical_bsp {
+public:
+  std::vector<Bsp_node> nodes;  // nodes[0] is the root
+
+  Bsp_counts counts() const;
+  // The tree as nested parentheses, pre-order, children left/below first:
+  // "(V s3.0 L R)" a vertex cut through endpoint 0 of segment 3,
+  // "(I s1xs4 L R)" an intersection cut, "(E s2 B A)" an edge cut, and "."
+  // a leaf. Golden tests compare this text.
+  std::string text() const;
+  // The nodes of the edge cuts of segment s (its fragments).
+  std::vector<std::size_t> fragments(std::size_t s) const;
+};
+
+template <class K>
+Cylindrical_bsp build_cylindrical_bsp(const Segment_predicates<K>& pred, const typename K::Time& t);
+
+// Violations of the BSP's invariants at t, checked against the tree without
+// its construction's reasoning: every cell a non-empty trapezoid whose walls
+// and floor and roof are those its ancestors' cuts give it; every fragment
+// crossing its cell from wall to wall between floor and roof; the fragments
+// of each segment tiling it in x order from one endpoint to the other; no
+// segment meeting the interior of a leaf. Empty when the tree is sound.
+template <class K>
+std::vector<std::string> bsp_violations(const Cylindrical_bsp& bsp, const Segment_predicates<K>& pred,
+                                        const typename K::Time& t);
+
+}  // namespace kvd::segments

@@ -1,0 +1,106 @@
+// The predicates of the cylindrical BSP of segments (seed 003, section 2.1),
+// on (t, t + δ) and in a symbolically perturbed scene, over any kernel.
+//
+// Every sign goes through one entry point, `decide`, which records the rule
+// that decided (as the KVD's classification does, DESIGN.md section 4):
+//  1. identity: the point lies on the segment by construction (an endpoint of
+//     it, or a crossing it defines), or two points are the same point: 0,
+//     without arithmetic;
+//  2. the sign at t of the value, a polynomial in t;
+//  3. if that is zero, the sign just after t (kernel sign_after);
+//  4. if the value is identically zero in t, the symbolic perturbation:
+//     endpoint e moved by ε (e + 1, (e + 1)^2) (the moment curve), ε -> 0+
+//     after time; the sign of the first coefficient in ε that is not
+//     identically zero, decided by rules 2-3. proofs/segment-perturbation.md
+//     says which predicates this provably decides; where every coefficient
+//     vanishes the answer is "unresolved" (0, counted).
+//
+// Points are homogeneous (X, Y, W). Endpoints are scaled so that W > 0 on the
+// whole span (the loader rejects a W that vanishes there); a derived point's
+// W may have either sign and is taken into every sign it enters.
+#pragma once
+
+#include <array>
+#include <compare>
+#include <cstdint>
+#include <vector>
+
+#include "kvd/segments/segment_scene.hpp"
+
+namespace kvd::segments {
+
+// A point of the arrangement that a cut passes through: an endpoint, or the
+// crossing of two segments (a < b).
+struct Site_point {
+  enum class Kind : std::uint8_t { endpoint, crossing };
+  Kind kind = Kind::endpoint;
+  std::uint32_t a = 0, b = 0;
+
+  static Site_point endpoint(std::size_t e) { return {Kind::endpoint, static_cast<std::uint32_t>(e), 0}; }
+  static Site_point crossing(std::size_t i, std::size_t j) {
+    const auto lo = static_cast<std::uint32_t>(i < j ? i : j), hi = static_cast<std::uint32_t>(i < j ? j : i);
+    return {Kind::crossing, lo, hi};
+  }
+  // Whether the point lies on segment s by construction.
+  bool on(std::size_t s) const { return kind == Kind::endpoint ? a / 2 == s : (a == s || b == s); }
+  friend auto operator<=>(const Site_point&, const Site_point&) = default;
+};
+
+enum class Segment_rule { identity, value, after, perturbation, unresolved };
+
+struct Segment_sign {
+  int sign;           // -1, 0, +1
+  Segment_rule rule;  // the rule that decided
+};
+
+struct Segment_rule_counts {
+  long identity = 0, value = 0, after = 0, perturbation = 0, unresolved = 0;
+};
+
+template <class K>
+class Segment_predicates {
+public:
+  using P = typename K::Poly;
+  using Time = typename K::Time;
+  // The homogeneous coordinates of a point or a line, over a ring R.
+  template <class R>
+  using H = std::array<R, 3>;
+
+  Segment_predicates(const K& k, const Segment_scene& s);
+
+  const K& kernel() const { return *k_; }
+  const Segment_scene& scene() const { return *s_; }
+  std::size_t size() const { return s_->segments.size(); }
+
+  // sign(x(a) - x(b)); 0 by identity when a == b.
+  Segment_sign compare_x(const Site_point& a, const Site_point& b, const Time& t) const;
+  // sign(y(p) - y_s(x(p))): +1 when p is above the line of s; 0 by identity
+  // when p lies on s.
+  Segment_sign side(const Site_point& p, std::size_t s, const Time& t) const;
+  // sign(y_i(x(p)) - y_j(x(p))): the vertical order of the lines of i and j
+  // at the abscissa of p; 0 by identity when p lies on both.
+  Segment_sign order_at(const Site_point& p, std::size_t i, std::size_t j, const Time& t) const;
+  // Whether segments i and j cross (at a point interior to both).
+  bool cross(std::size_t i, std::size_t j, const Time& t) const;
+  // The endpoint of s with the smaller x, and the other one.
+  std::size_t left_endpoint(std::size_t s, const Time& t) const;
+  std::size_t right_endpoint(std::size_t s, const Time& t) const { return left_endpoint(s, t) ^ 1U; }
+
+  // How many signs each rule decided.
+  const Segment_rule_counts& counts() const { return counts_; }
+
+private:
+  // The single entry point: the sign of the product of the factors that
+  // `factors(endpoints)` computes over either ring, each decided by rules 2-4.
+  template <class F>
+  Segment_sign decide(const F& factors, const Time& t) const;
+  bool vanishes(const P& f) const;
+
+  const K* k_;
+  const Segment_scene* s_;
+  std::vector<H<P>> endpoints_;           // W > 0 on the span
+  std::vector<H<Poly<P>>> perturbed_;     // endpoint + ε g_e
+  mutable Segment_rule_counts counts_;
+};
+
+}  // namespace kvd::segments

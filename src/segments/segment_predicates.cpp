@@ -1,0 +1,176 @@
+#include "kvd/segments/segment_predicates.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kernel/kernel.hpp"
+
+namespace kvd::segments {
+
+namespace {
+
+template <class R>
+using H = std::array<R, 3>;
+
+// The join of two points (a line) or the meet of two lines (a point).
+template <class R>
+H<R> wedge(const H<R>& a, const H<R>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+template <class R>
+R dot(const H<R>& a, const H<R>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+template <class R>
+H<R> line(const std::vector<H<R>>& e, std::size_t s) {
+  return wedge(e[2 * s], e[2 * s + 1]);
+}
+
+template <class R>
+H<R> point(const std::vector<H<R>>& e, const Site_point& p) {
+  if (p.kind == Site_point::Kind::endpoint) return e[p.a];
+  return wedge(line(e, p.a), line(e, p.b));
+}
+
+// x(P1) - x(P0) of segment s, times W0 W1 > 0.
+template <class R>
+R dx(const std::vector<H<R>>& e, std::size_t s) {
+  return e[2 * s + 1][0] * e[2 * s][2] - e[2 * s][0] * e[2 * s + 1][2];
+}
+
+// The factors of side(q, s) for a point q given by coordinates: det[P0; P1; q]
+// is the orientation of (P0, P1, q) times W0 W1 W_q, and "left of P0 -> P1"
+// is "above" when x(P0) < x(P1).
+template <class R>
+std::vector<R> side_factors(const std::vector<H<R>>& e, const H<R>& q, std::size_t s, bool q_is_endpoint) {
+  std::vector<R> f{dot(line(e, s), q), dx(e, s)};
+  if (!q_is_endpoint) f.push_back(q[2]);
+  return f;
+}
+
+}  // namespace
+
+template <class K>
+Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s) : k_(&k), s_(&s) {
+  using FT = typename K::FT;
+  for (std::size_t e = 0; e < s.endpoint_count(); ++e) {
+    const Motion_point3 m = s.endpoint(e);
+    const bool negate = sgn(m[2](s.start)) < 0;
+    H<P> p;
+    for (std::size_t i = 0; i < 3; ++i) p[i] = poly_from_rational<FT>(negate ? QPoly(-m[i]) : m[i]);
+    const mpq_class g(static_cast<long>(e) + 1);
+    const P gx(from_rational<FT>(g)), gy(from_rational<FT>(g * g));
+    perturbed_.push_back({Poly<P>(std::vector<P>{p[0], p[2] * gx}), Poly<P>(std::vector<P>{p[1], p[2] * gy}),
+                          Poly<P>(std::vector<P>{p[2]})});
+    endpoints_.push_back(std::move(p));
+  }
+}
+
+template <class K>
+bool Segment_predicates<K>::vanishes(const P& f) const {
+  return std::all_of(f.coefficients().begin(), f.coefficients().end(),
+                     [&](const auto& c) { return k_->sign(c) == 0; });
+}
+
+template <class K>
+template <class F>
+Segment_sign Segment_predicates<K>::decide(const F& factors, const Time& t) const {
+  const std::vector<P> v = factors(endpoints_);
+  std::optional<std::vector<Poly<P>>> expanded;
+  int sign = 1;
+  Segment_rule rule = Segment_rule::value;
+  for (std::size_t f = 0; f < v.size(); ++f) {
+    if (!vanishes(v[f])) {
+      int s = k_->sign_at(v[f], t);
+      if (s == 0) {
+        s = k_->sign_after(v[f], t);
+        rule = std::max(rule, Segment_rule::after);
+      }
+      sign *= s;
+      continue;
+    }
+    if (!expanded) expanded = factors(perturbed_);
+    int s = 0;
+    for (const P& c : (*expanded)[f].coefficients()) {
+      if (vanishes(c)) continue;
+      s = k_->sign_at(c, t);
+      if (s == 0) s = k_->sign_after(c, t);
+      break;
+    }
+    if (s == 0) {
+      ++counts_.unresolved;
+      return {0, Segment_rule::unresolved};
+    }
+    rule = Segment_rule::perturbation;
+    sign *= s;
+  }
+  ++(rule == Segment_rule::value ? counts_.value : rule == Segment_rule::after ? counts_.after : counts_.perturbation);
+  return {sign, rule};
+}
+
+template <class K>
+Segment_sign Segment_predicates<K>::compare_x(const Site_point& a, const Site_point& b, const Time& t) const {
+  if (a == b) {
+    ++counts_.identity;
+    return {0, Segment_rule::identity};
+  }
+  return decide(
+      [&](const auto& e) {
+        const auto pa = point(e, a), pb = point(e, b);
+        std::vector<std::decay_t<decltype(pa[0])>> f{pa[0] * pb[2] - pb[0] * pa[2]};
+        if (a.kind == Site_point::Kind::crossing) f.push_back(pa[2]);
+        if (b.kind == Site_point::Kind::crossing) f.push_back(pb[2]);
+        return f;
+      },
+      t);
+}
+
+template <class K>
+Segment_sign Segment_predicates<K>::side(const Site_point& p, std::size_t s, const Time& t) const {
+  if (p.on(s)) {
+    ++counts_.identity;
+    return {0, Segment_rule::identity};
+  }
+  return decide([&](const auto& e) { return side_factors(e, point(e, p), s, p.kind == Site_point::Kind::endpoint); },
+                t);
+}
+
+template <class K>
+Segment_sign Segment_predicates<K>::order_at(const Site_point& p, std::size_t i, std::size_t j, const Time& t) const {
+  if (p.on(i)) return side(p, j, t);
+  if (p.on(j)) {
+    const Segment_sign r = side(p, i, t);
+    return {-r.sign, r.rule};
+  }
+  // The point of the line of i above or below p, then its side of j.
+  return decide(
+      [&](const auto& e) {
+        const auto q = point(e, p);
+        using R = std::decay_t<decltype(q[0])>;
+        const H<R> vertical{q[2], R(), -q[0]};
+        return side_factors(e, wedge(line(e, i), vertical), j, false);
+      },
+      t);
+}
+
+template <class K>
+bool Segment_predicates<K>::cross(std::size_t i, std::size_t j, const Time& t) const {
+  const auto straddles = [&](std::size_t a, std::size_t b) {
+    return side(Site_point::endpoint(2 * b), a, t).sign * side(Site_point::endpoint(2 * b + 1), a, t).sign < 0;
+  };
+  return straddles(i, j) && straddles(j, i);
+}
+
+template <class K>
+std::size_t Segment_predicates<K>::left_endpoint(std::size_t s, const Time& t) const {
+  return compare_x(Site_point::endpoint(2 * s), Site_point::endpoint(2 * s + 1), t).sign < 0 ? 2 * s : 2 * s + 1;
+}
+
+#define KVD_INSTANTIATE_SEGMENT_PREDICATES(K) template class Segment_predicates<K>;
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_SEGMENT_PREDICATES)
+
+}  // namespace kvd::segments

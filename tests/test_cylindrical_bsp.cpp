@@ -1,0 +1,191 @@
+// The static cylindrical BSP of segments (seed 003, section 2.1): whole trees
+// derived by hand, the invariants, agreement between kernels, and the
+// symbolic perturbation against an explicit small one.
+#include <catch2/catch.hpp>
+#include <algorithm>
+
+#include "kernels.hpp"
+#include "kvd/detail/scene/priority.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/segments/cylindrical_bsp.hpp"
+
+using namespace kvd;
+using namespace kvd::segments;
+
+namespace {
+
+Segment fixed(long x0, long y0, long x1, long y1) {
+  Segment s;
+  s.rest = {Point3{x0, y0, 1}, Point3{x1, y1, 1}};
+  return s;
+}
+
+// A segment whose endpoints move: each coordinate a polynomial in t.
+Segment moving(const QPoly& x0, const QPoly& y0, const QPoly& x1, const QPoly& y1) {
+  Segment s;
+  s.rest = {Point3{0, 0, 1}, Point3{0, 0, 1}};
+  s.motion.kind = Segment_motion::Kind::endpoints;
+  s.motion.endpoints = {Motion_point3{x0, y0, QPoly(1)}, Motion_point3{x1, y1, QPoly(1)}};
+  return s;
+}
+
+Segment_scene scene_of(std::vector<Segment> segments, std::vector<std::size_t> order) {
+  Segment_scene s;
+  s.segments = std::move(segments);
+  s.order = std::move(order);
+  s.derive();
+  return s;
+}
+
+template <class K>
+Cylindrical_bsp build_at(const Segment_scene& s, const mpq_class& t, const K& k = K()) {
+  const Segment_predicates<K> pred(k, s);
+  const auto time = k.time(from_rational<typename K::FT>(t));
+  Cylindrical_bsp b = build_cylindrical_bsp(pred, time);
+  const auto violations = bsp_violations(b, pred, time);
+  INFO(b.text());
+  for (const auto& v : violations) UNSCOPED_INFO(v);
+  CHECK(violations.empty());
+  CHECK(pred.counts().unresolved == 0);
+  return b;
+}
+
+QPoly linear(long c0, long c1) { return QPoly({mpq_class(c0), mpq_class(c1)}); }
+
+// Small integer coordinates: shared x-coordinates, collinear triples and
+// concurrent crossings are frequent.
+Segment_scene random_scene(std::uint64_t seed, std::size_t n, long range) {
+  scene::Split_mix64 g(seed);
+  std::vector<Segment> segs;
+  while (segs.size() < n) {
+    const long x0 = g.between(-range, range), y0 = g.between(-range, range);
+    const long x1 = g.between(-range, range), y1 = g.between(-range, range);
+    if (x0 != x1 || y0 != y1) segs.push_back(fixed(x0, y0, x1, y1));
+  }
+  Segment_scene s;
+  s.segments = std::move(segs);
+  s.seed = seed;
+  s.derive();
+  return s;
+}
+
+// The scene with endpoint e moved by eps (e + 1, (e + 1)^2): the perturbation
+// of the predicates made explicit.
+Segment_scene explicitly_perturbed(const Segment_scene& s, const mpq_class& eps) {
+  Segment_scene p = s;
+  for (std::size_t e = 0; e < s.endpoint_count(); ++e) {
+    Point3& r = p.segments[e / 2].rest[e % 2];
+    const mpq_class g(static_cast<long>(e) + 1);
+    r[0] += eps * g * r[2];
+    r[1] += eps * g * g * r[2];
+  }
+  return p;
+}
+
+}  // namespace
+
+// Figure 1 of seed 003 in its smallest form: s1 crosses s0 once. Derived by
+// following the three phases: s0 gets two vertex cuts and one edge cut;
+// s1's vertex cuts fall above s0 (s1.0) and right of s0.1; the crossing gets
+// an intersection cut above and below s0; s1's edge cut falls in the three
+// leaves it then meets.
+TEMPLATE_TEST_CASE("two crossing segments: the tree derived by hand", "[segments][bsp]", KVD_ALL_KERNELS) {
+  const auto s = scene_of({fixed(0, 0, 4, 4), fixed(1, 4, 5, 0)}, {0, 1});
+  const Cylindrical_bsp b = build_at<TestType>(s, 0);
+  CHECK(b.text() ==
+        "(V s0.0 . (V s0.1 (E s0 (I s0xs1 . (E s1 . .)) (V s1.0 . (I s0xs1 (E s1 . .) .))) (V s1.1 (E s1 . .) .)))");
+  const Bsp_counts c = b.counts();
+  CHECK(c.vertex_cuts == 4);
+  CHECK(c.intersection_cuts == 2);
+  CHECK(c.edge_cuts == 4);
+  CHECK(c.nodes == 21);
+  CHECK(c.height == 7);
+}
+
+// The first edge event of seed 003, section 3.1.2: s1 passes over the right
+// endpoint of s0 (priority j = 0 < i = 1) at t = 1 and crosses s0 after it.
+// Before: s1 lies above s0 in its cell. At t = 1 the tree is the one just
+// after (sign_after decides that s0.1 is above s1), the same as for two
+// crossing segments.
+TEMPLATE_TEST_CASE("a segment over an endpoint: the trees before and after", "[segments][bsp]", KVD_ALL_KERNELS) {
+  // s1 from (2, 2 - t) to (6, -t); at x = 4 it is at height 1 - t.
+  const auto s = scene_of({fixed(0, 0, 4, 0), moving(linear(2, 0), linear(2, -1), linear(6, 0), linear(0, -1))}, {0, 1});
+  CHECK(build_at<TestType>(s, 0).text() == "(V s0.0 . (V s0.1 (E s0 . (V s1.0 . (E s1 . .))) (V s1.1 (E s1 . .) .)))");
+  const std::string after =
+      "(V s0.0 . (V s0.1 (E s0 (I s0xs1 . (E s1 . .)) (V s1.0 . (I s0xs1 (E s1 . .) .))) (V s1.1 (E s1 . .) .)))";
+  CHECK(build_at<TestType>(s, 1).text() == after);
+  CHECK(build_at<TestType>(s, mpq_class(3, 2)).text() == after);
+}
+
+// A flip (section 3.1.4): s0 runs from (-t, -2) to (t, 2), vertical at t = 0.
+// At t = 0 the tree is the one of t > 0, where s0.0 is the left endpoint and
+// the crossing with s1 (at x = t/2) lies between s0.0 and s0.1.
+TEMPLATE_TEST_CASE("a segment turning vertical: the tree at the flip", "[segments][bsp]", KVD_ALL_KERNELS) {
+  const auto s = scene_of({moving(linear(0, -1), linear(-2, 0), linear(0, 1), linear(2, 0)), fixed(-3, 1, 3, 1)}, {1, 0});
+  const std::string after =
+      "(V s1.0 . (V s1.1 (E s1 (V s0.0 . (I s0xs1 (E s0 . .) .)) (V s0.1 (I s0xs1 . (E s0 . .)) .)) .))";
+  CHECK(build_at<TestType>(s, 0).text() == after);
+  CHECK(build_at<TestType>(s, 1).text() == after);
+}
+
+TEST_CASE("the symbolic perturbation equals an explicit small one", "[segments][bsp][perturbation]") {
+  long perturbed = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Segment_scene s = random_scene(seed, 10, 4);
+    const Exact_kernel k;
+    const Segment_predicates<Exact_kernel> symbolic(k, s);
+    const std::string expected = build_cylindrical_bsp(symbolic, k.time(0)).text();
+    const Segment_scene p = explicitly_perturbed(s, mpq_class(1, mpz_class(1) << 60));
+    const Segment_predicates<Exact_kernel> explicit_pred(k, p);
+    INFO("seed " << seed);
+    CHECK(build_cylindrical_bsp(explicit_pred, k.time(0)).text() == expected);
+    CHECK(explicit_pred.counts().perturbation == 0);
+    perturbed += symbolic.counts().perturbation;
+  }
+  CHECK(perturbed > 100);  // the scenes are degenerate enough to test it
+}
+
+// Three segments through the origin. The perturbation moves endpoint e by
+// eps (e + 1, (e + 1)^2); to first order in eps the lines become
+// y = x + eps (s0), y = -x + 18 eps (s1), y = -x/4 + 31.875 eps (s2), so the
+// crossings part into a small triangle with x(s1xs2) = -18.5 eps <
+// x(s0xs1) = 8.5 eps < x(s0xs2) = 24.7 eps, s1xs2 above s0 and s0xs2 above
+// s1. Following the three phases with these positions gives the tree below
+// (s2's crossing walk meets s0 first, then s1 above s0 left of s0xs1).
+TEST_CASE("three concurrent segments: the tree derived by hand under the perturbation", "[segments][bsp][perturbation]") {
+  const auto s = scene_of({fixed(-2, -2, 2, 2), fixed(-3, 3, 1, -1), fixed(-4, 1, 4, -1)}, {0, 1, 2});
+  CHECK(build_at<Exact_kernel>(s, 0).text() ==
+        "(V s0.0 (V s1.0 (V s2.0 . (E s2 . .)) (E s1 (E s2 . .) .)) (V s0.1 (E s0 (V s1.1 (I s0xs1 . (E s1 . (I "
+        "s0xs2 . (E s2 . .)))) (E s2 . .)) (I s0xs1 (E s1 (I s1xs2 (E s2 . .) .) (I s1xs2 . (E s2 . .))) (I s0xs2 "
+        "(E s2 . .) .))) (V s2.1 (E s2 . .) .)))");
+}
+
+TEST_CASE("the invariants catch a tree that is not a BSP of its segments", "[segments][bsp]") {
+  const auto s = scene_of({fixed(0, 0, 4, 4), fixed(1, 4, 5, 0)}, {0, 1});
+  const Exact_kernel k;
+  const Segment_predicates<Exact_kernel> pred(k, s);
+  const Cylindrical_bsp good = build_cylindrical_bsp(pred, k.time(0));
+  CHECK(bsp_violations(good, pred, k.time(0)).empty());
+  // The children of s0's edge cut swapped: cells no longer match their cuts,
+  // and s1's fragments lie in the wrong cells.
+  Cylindrical_bsp swapped = good;
+  for (Bsp_node& n : swapped.nodes)
+    if (n.kind == Cut_kind::edge && n.segment == 0) std::swap(n.child[0], n.child[1]);
+  CHECK(!bsp_violations(swapped, pred, k.time(0)).empty());
+  // A fragment of s1 dropped (its edge cut made a leaf): a gap in the tiling,
+  // and s1 meets a leaf's interior.
+  Cylindrical_bsp dropped = good;
+  dropped.nodes[dropped.fragments(1).back()].kind = Cut_kind::leaf;
+  const auto v = bsp_violations(dropped, pred, k.time(0));
+  CHECK(std::any_of(v.begin(), v.end(), [](const std::string& m) { return m.find("meets the leaf") != std::string::npos; }));
+}
+
+TEMPLATE_TEST_CASE("random segment scenes satisfy the BSP invariants, and every kernel builds the exact tree",
+                   "[segments][bsp]", KVD_ALL_KERNELS) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const Segment_scene s = random_scene(seed, 12, 20);
+    INFO("seed " << seed);
+    const std::string exact = build_at<Exact_kernel>(s, 0).text();
+    CHECK(build_at<TestType>(s, 0).text() == exact);
+  }
+}
