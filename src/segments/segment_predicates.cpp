@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/convert.hpp"
@@ -54,6 +55,19 @@ std::vector<R> side_factors(const std::vector<H<R>>& e, const H<R>& q, std::size
 
 }  // namespace
 
+long perturbation_lambda(std::size_t e, std::size_t n) {
+  long p = std::max<long>(2, static_cast<long>(n));
+  const auto prime = [](long q) {
+    for (long d = 2; d * d <= q; ++d)
+      if (q % d == 0) return false;
+    return true;
+  };
+  while (!prime(p)) ++p;
+  const long i = static_cast<long>(e / 2);
+  const long a = 2 * p * i + (i * i) % p;
+  return 2 * a + 1 + static_cast<long>(e % 2);
+}
+
 template <class K>
 Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s) : k_(&k), s_(&s) {
   using FT = typename K::FT;
@@ -62,7 +76,7 @@ Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s) : 
     const bool negate = sgn(m[2](s.start)) < 0;
     H<P> p;
     for (std::size_t i = 0; i < 3; ++i) p[i] = poly_from_rational<FT>(negate ? QPoly(-m[i]) : m[i]);
-    const mpq_class g(static_cast<long>(e) + 1);
+    const mpq_class g(perturbation_lambda(e, s.segments.size()));
     const P gx(from_rational<FT>(g)), gy(from_rational<FT>(g * g));
     perturbed_.push_back({Poly<P>(std::vector<P>{p[0], p[2] * gx}), Poly<P>(std::vector<P>{p[1], p[2] * gy}),
                           Poly<P>(std::vector<P>{p[2]})});
@@ -101,10 +115,7 @@ Segment_sign Segment_predicates<K>::decide(const F& factors, const Time& t) cons
       if (s == 0) s = k_->sign_after(c, t);
       break;
     }
-    if (s == 0) {
-      ++counts_.unresolved;
-      return {0, Segment_rule::unresolved};
-    }
+    if (s == 0) throw std::logic_error("segment predicate: every ε-coefficient vanishes (see proofs/segment-perturbation.md)");
     rule = Segment_rule::perturbation;
     sign *= s;
   }

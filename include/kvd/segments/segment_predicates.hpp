@@ -9,11 +9,11 @@
 //  2. the sign at t of the value, a polynomial in t;
 //  3. if that is zero, the sign just after t (kernel sign_after);
 //  4. if the value is identically zero in t, the symbolic perturbation:
-//     endpoint e moved by ε (e + 1, (e + 1)^2) (the moment curve), ε -> 0+
-//     after time; the sign of the first coefficient in ε that is not
-//     identically zero, decided by rules 2-3. proofs/segment-perturbation.md
-//     says which predicates this provably decides; where every coefficient
-//     vanishes the answer is "unresolved" (0, counted).
+//     endpoint e moved by ε (λ_e, λ_e^2) (on the parabola), ε -> 0+ after
+//     time; the sign of the first coefficient in ε that is not identically
+//     zero, decided by rules 2-3. proofs/segment-perturbation.md proves that
+//     with the λ of `perturbation_lambda` some coefficient never vanishes,
+//     for every predicate here: a vanishing one is a bug (std::logic_error).
 //
 // Points are homogeneous (X, Y, W). Endpoints are scaled so that W > 0 on the
 // whole span (the loader rejects a W that vanishes there); a derived point's
@@ -46,7 +46,13 @@ struct Site_point {
   friend auto operator<=>(const Site_point&, const Site_point&) = default;
 };
 
-enum class Segment_rule { identity, value, after, perturbation, unresolved };
+// λ_e of endpoint e in a scene of n segments: segment i has λ = 2 a_i + 1
+// and 2 a_i + 2, where a_i = 2 p i + (i^2 mod p) for the smallest prime
+// p >= n (Erdős–Turán), a Sidon set: no two pairs of a's have the same sum.
+// That is what makes every predicate's leading ε-coefficient non-zero.
+long perturbation_lambda(std::size_t e, std::size_t n);
+
+enum class Segment_rule { identity, value, after, perturbation };
 
 struct Segment_sign {
   int sign;           // -1, 0, +1
@@ -54,7 +60,7 @@ struct Segment_sign {
 };
 
 struct Segment_rule_counts {
-  long identity = 0, value = 0, after = 0, perturbation = 0, unresolved = 0;
+  long identity = 0, value = 0, after = 0, perturbation = 0;
 };
 
 template <class K>
