@@ -23,8 +23,10 @@ struct Run {
   std::string out;
 };
 
-Run run(const std::string& args) {
-  const std::string cmd = std::string(KVD_EXECUTABLE) + " " + args + " 2>/dev/null";
+// Runs kvd with `args`; `redirect` says where its output goes (by default
+// stdout is captured, stderr dropped).
+Run run(const std::string& args, const std::string& redirect = "2>/dev/null") {
+  const std::string cmd = std::string(KVD_EXECUTABLE) + " " + args + " " + redirect;
   FILE* pipe = popen(cmd.c_str(), "r");
   REQUIRE(pipe != nullptr);
   std::string out;
@@ -493,4 +495,50 @@ TEST_CASE("kvd view and kvd animate refuse bad input with status 2 and write not
   CHECK(run("animate " + data + "boxes.json --view 1,2,3 --out " + dir + "x.avi").status == 2);
   CHECK(run("animate " + data + "boxes.json --view 1,2,3 --fps 0 --out " + film).status == 2);
   CHECK(!std::ifstream(film).good());
+}
+
+TEST_CASE("kvd info tells segment scenes by their format and counts them exactly", "[cli][info][segments]") {
+  const std::string dir = std::string(KVD_SOURCE_DIR) + "/data/segments/";
+  const Run json = run("info " + dir + "two-crossing.json --json");
+  CHECK(json.status == 0);
+  CHECK(json.out.find("\"format\": \"kvd-segments/1\", \"name\": \"two-crossing\", \"segments\": 2, "
+                      "\"moving_segments\": 0, \"max_motion_degree\": 0, \"crossings_at_start\": 1, "
+                      "\"start\": \"0\", \"end\": \"10\"}") != std::string::npos);
+  const Run text = run("info - < " + dir + "over-endpoint.json");
+  CHECK(text.status == 0);
+  CHECK(text.out.find("scene:             over-endpoint (-)\n") != std::string::npos);
+  CHECK(text.out.find("segments:          2\nmoving segments:   1\nmax motion degree: 1\n") != std::string::npos);
+  CHECK(text.out.find("crossings:         0 (at the start time)\ntime span:         [0, 7/2]\n") != std::string::npos);
+  // A bad segment file: status 2, the message names the file and the place.
+  const std::string bad = scene_file("bad-segments.json", R"({"format": "kvd-segments/1", "segments": [
+      {"endpoints": [[0, 0], [1, 1]]}, {"endpoints": [[2, 2], [4, 4, 2]]}]})");
+  CHECK(run("info " + bad).status == 2);
+  const Run message = run("info " + bad, "2>&1 >/dev/null");
+  CHECK(message.out.find(bad + ": /segments/1: the segment has zero length") != std::string::npos);
+  CHECK(run("info " + bad + " --json", "2>&1 >/dev/null").out.find(bad + ": /segments/1: ") != std::string::npos);
+}
+
+TEST_CASE("kvd generate writes segment scenes that kvd info reads back", "[cli][generate][segments]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/segments-random.json";
+  std::remove(out.c_str());
+  const std::string args = "generate segments-random --n 100 --length 0.1 --moving 50 --motion linear --seed 3";
+  REQUIRE(run(args + " -o " + out).status == 0);
+  const Run info = run("info " + out + " --json");
+  CHECK(info.status == 0);
+  CHECK(info.out.find("\"segments\": 100, \"moving_segments\": 50, \"max_motion_degree\": 1") != std::string::npos);
+  // The same options give the same bytes, on stdout too.
+  std::ifstream in(out);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(run(args).out == written);
+  CHECK(run("generate segments-rotating --n 5").out.find("\"matrix\"") != std::string::npos);
+  CHECK(run("generate segments-degenerate --n 9 --moving 0").status == 0);
+  const std::string help = run("generate --help").out;
+  for (const char* family : {"segments-random", "segments-rotating", "segments-degenerate"})
+    CHECK(help.find(family) != std::string::npos);
+  CHECK(run("generate segments-random --n 5 --moving 6").status == 2);
+  CHECK(run("generate segments-random --moving 1/2").status == 2);
+  CHECK(run("generate segments-random --motion spin").status == 2);
+  CHECK(run("generate segments-rotating --motion linear").status == 2);
+  CHECK(run("generate segments-random --length 2").status == 2);
+  CHECK(run("generate segments-spiral").status == 2);
 }

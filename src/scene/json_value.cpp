@@ -210,7 +210,61 @@ private:
   std::vector<Json_value*> stack_;
 };
 
+// Finds the string member `key` of the top-level object and stops there.
+class Member_finder : public nlohmann::json_sax<json> {
+public:
+  explicit Member_finder(const std::string& key) : key_(key) {}
+  std::string found;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t& v) override {
+    if (depth_ == 1 && wanted_ && (v.empty() || v[0] != number_mark)) {
+      found = v;
+      return false;
+    }
+    return value();
+  }
+  bool binary(binary_t&) override { return false; }
+  bool start_object(std::size_t) override { return open(); }
+  bool key(string_t& k) override {
+    wanted_ = depth_ == 1 && k == key_;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return depth_ > 0 && open(); }  // a top-level array has no members
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+private:
+  // A value other than the string sought: the member, if it was `key`, is not a string.
+  bool value() { return !(depth_ == 1 && wanted_); }
+  bool open() {
+    if (!value()) return false;
+    ++depth_;
+    return true;
+  }
+  bool close() {
+    --depth_;
+    return depth_ > 0;  // past the top-level object: nothing more to find
+  }
+
+  const std::string& key_;
+  std::size_t depth_ = 0;
+  bool wanted_ = false;
+};
+
 }  // namespace
+
+std::string top_level_string(const std::string& text, const std::string& key) {
+  std::vector<std::pair<std::size_t, std::size_t>> shifts;
+  Member_finder f(key);
+  json::sax_parse(protect_numbers(text, shifts), &f, json::input_format_t::json, true);
+  return f.found;
+}
 
 bool parse_json(const std::string& text, Json_value& out, std::string& error) {
   out = Json_value{};

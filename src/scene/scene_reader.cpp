@@ -3,12 +3,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <initializer_list>
 #include <set>
-#include <sstream>
 
-#include "kvd/detail/scene/exact_number.hpp"
-#include "kvd/detail/scene/json_value.hpp"
+#include "kvd/detail/scene/json_reader.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/detail/scene/span_check.hpp"
 #include "kvd/detail/scene/triangle_intersection.hpp"
@@ -19,85 +16,17 @@ namespace {
 
 using Kind = Json_value::Kind;
 
-class Reader {
+// The triangle scene's own parts; the shared ones come from Json_reader.
+class Reader : public Json_reader {
 public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& at, const std::string& what) const {
-    throw Scene_error(source_ + ": " + (at.empty() ? "/" : at) + ": " + what);
-  }
-
-  void expect(const Json_value& v, Kind k, const std::string& at) const {
-    if (v.kind != k) fail(at, std::string("expected ") + kind_name(k) + ", found " + kind_name(v.kind));
-  }
-
-  // An object with only the given keys, all of `required` among them.
-  void expect_object(const Json_value& v, const std::string& at, std::initializer_list<const char*> allowed,
-                     std::initializer_list<const char*> required) const {
-    expect(v, Kind::object, at);
-    for (const auto& [key, value] : v.members) {
-      bool known = false;
-      for (const char* a : allowed) known = known || key == a;
-      if (!known) {
-        std::string list;
-        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-        fail(at + "/" + key, "unknown key \"" + key + "\" (expected one of: " + list + ")");
-      }
-    }
-    for (const char* r : required)
-      if (!v.find(r)) fail(at, std::string("missing required key \"") + r + "\"");
-  }
-
-  Q number(const Json_value& v, const std::string& at) const {
-    if (v.kind != Kind::number && v.kind != Kind::string)
-      fail(at, std::string("expected a number, found ") + kind_name(v.kind));
-    std::string why;
-    auto q = parse_exact_number(v.text, why);
-    // A long text is quoted by its first characters only.
-    if (!q) fail(at, why + ": \"" + (v.text.size() > 40 ? v.text.substr(0, 40) + "..." : v.text) + "\"");
-    return *q;
-  }
-
-  QPoly poly(const Json_value& v, const std::string& at) const {
-    if (v.kind != Kind::array) return QPoly(number(v, at));
-    if (v.items.size() > static_cast<std::size_t>(max_motion_degree) + 1)
-      fail(at, "a polynomial of " + std::to_string(v.items.size()) + " coefficients (the degree in t is at most " +
-                   std::to_string(max_motion_degree) + ")");
-    std::vector<Q> c;
-    for (std::size_t i = 0; i < v.items.size(); ++i) c.push_back(number(v.items[i], at + "/" + std::to_string(i)));
-    return QPoly(std::move(c));
-  }
-
-  const std::vector<Json_value>& array(const Json_value& v, const std::string& at, std::size_t size = 0) const {
-    expect(v, Kind::array, at);
-    if (size && v.items.size() != size)
-      fail(at, "expected an array of " + std::to_string(size) + " entries, found " + std::to_string(v.items.size()));
-    return v.items;
-  }
+  using Json_reader::Json_reader;
 
   Motion_point point4(const Json_value& v, const std::string& at) const {
-    const auto& items = array(v, at, 4);
-    Motion_point p;
-    for (int i = 0; i < 4; ++i) p[i] = poly(items[static_cast<std::size_t>(i)], at + "/" + std::to_string(i));
+    const std::vector<QPoly> c = point(v, at, 4);
+    const Motion_point p{{c[0], c[1], c[2], c[3]}};
     if (p[0].is_zero() && p[1].is_zero() && p[2].is_zero() && p[3].is_zero())
       fail(at, "a point4 that is identically [0, 0, 0, 0]");
     return p;
-  }
-
-  std::uint64_t unsigned_integer(const Json_value& v, const std::string& at) const {
-    if (v.kind != Kind::number || v.text.find_first_not_of("0123456789") != std::string::npos)
-      fail(at, "expected a non-negative integer");
-    const mpz_class z(v.text, 10);
-    if (z > mpz_class("18446744073709551615")) fail(at, "integer above 2^64 - 1");
-    return std::stoull(v.text);
-  }
-
-  std::size_t index(const Json_value& v, const std::string& at, std::size_t n, const char* what) const {
-    if (v.kind != Kind::number || v.text.find_first_not_of("0123456789") != std::string::npos)
-      fail(at, std::string("expected ") + what + " index (a non-negative integer)");
-    if (v.text.size() > 18 || std::stoull(v.text) >= n)
-      fail(at, std::string(what) + " index " + v.text + " out of range (" + std::to_string(n) + " available)");
-    return static_cast<std::size_t>(std::stoull(v.text));
   }
 
   Scene read(const Json_value& doc, const Load_options& options) const;
@@ -107,8 +36,6 @@ private:
   Motion read_motion(const Json_value& v, const std::string& at, std::size_t vertex_count) const;
   void read_priority(const Json_value& v, const std::string& at, Scene& s) const;
   void check_geometry(const Scene& s, const Load_options& options) const;
-
-  std::string source_;
 };
 
 Motion Reader::read_motion(const Json_value& v, const std::string& at, std::size_t vertex_count) const {
@@ -204,17 +131,8 @@ std::string triangle_place(const Scene& s, std::size_t t) {
   return "/objects/" + std::to_string(o) + "/triangles/" + std::to_string(t - s.objects[o].first_triangle);
 }
 
-// " at t = 7/3", or " at t = root of [...] in (lo, hi) (about 1.4142135623730951)".
-std::string instant_text(const Exact_time& t) {
-  if (t.is_rational()) return " at t = " + t.to_string();
-  std::ostringstream approx;
-  approx.precision(17);
-  approx << t.to_double();
-  return " at t = " + t.to_string() + " (about " + approx.str() + ")";
-}
-
 void Reader::check_geometry(const Scene& s, const Load_options& options) const {
-  const std::string span = s.end ? "inside the time span" : "after the start time (the scene has no end)";
+  const std::string span = span_text(s.end);
   for (std::size_t v = 0; v < s.rest.size(); ++v) {
     const std::size_t o = s.vertex_object[v];
     const std::string here = "/objects/" + std::to_string(o) + "/vertices/" + std::to_string(v - s.objects[o].first_vertex);
@@ -305,8 +223,10 @@ Scene read_scene(const std::string& text, const std::string& source, const Load_
   return Reader(source).read(doc, options);
 }
 
+std::string input_name(const std::string& path) { return path == "-" ? "(stdin)" : path; }
+
 std::string read_input(const std::string& path) {
-  const std::string name = path == "-" ? "(stdin)" : path;
+  const std::string name = input_name(path);
   std::error_code ec;
   if (path != "-") {
     const auto status = std::filesystem::status(path, ec);
@@ -332,7 +252,7 @@ std::string read_input(const std::string& path) {
 }
 
 Scene load_scene(const std::string& path, const Load_options& options) {
-  return read_scene(read_input(path), path == "-" ? "(stdin)" : path, options);
+  return read_scene(read_input(path), input_name(path), options);
 }
 
 }  // namespace kvd::scene

@@ -1,35 +1,28 @@
 // The scene writer: numbers as exact strings, polynomials as arrays (a
 // constant as a plain number string), keys in the order of the format page.
-#include <nlohmann/json.hpp>
-
-#include "kvd/detail/scene/exact_number.hpp"
+#include "json_writer.hpp"
 #include "kvd/scene/scene_io.hpp"
 
 namespace kvd::scene {
 
 namespace {
 
-using J = nlohmann::ordered_json;
+using J = Json_out;
 
-J number(const Q& q) { return exact_text(q); }
-
-J poly(const QPoly& p) {
-  if (p.degree() <= 0) return number(p[0]);
-  J a = J::array();
-  for (const auto& c : p.coefficients()) a.push_back(number(c));
-  return a;
+J point4(const Motion_point& p) {
+  return J::array({poly_json(p[0]), poly_json(p[1]), poly_json(p[2]), poly_json(p[3])});
 }
-
-J point4(const Motion_point& p) { return J::array({poly(p[0]), poly(p[1]), poly(p[2]), poly(p[3])}); }
 
 J motion(const Motion& m) {
   switch (m.kind) {
     case Motion::Kind::none: return nullptr;
     case Motion::Kind::translation:
-      return J{{"translation", J::array({poly(m.translation[0]), poly(m.translation[1]), poly(m.translation[2])})}};
+      return J{{"translation",
+                J::array({poly_json(m.translation[0]), poly_json(m.translation[1]), poly_json(m.translation[2])})}};
     case Motion::Kind::matrix: {
       J rows = J::array();
-      for (const auto& row : m.matrix) rows.push_back(J::array({poly(row[0]), poly(row[1]), poly(row[2]), poly(row[3])}));
+      for (const auto& row : m.matrix)
+        rows.push_back(J::array({poly_json(row[0]), poly_json(row[1]), poly_json(row[2]), poly_json(row[3])}));
       return J{{"matrix", rows}};
     }
     case Motion::Kind::vertices: {
@@ -41,27 +34,6 @@ J motion(const Motion& m) {
   return nullptr;
 }
 
-// Pretty printing that keeps short values (a point, a vertex list of a small
-// triangle) on one line: the compact form when it fits in 100 columns.
-void print(const J& v, int indent, std::string& out) {
-  const std::string compact = v.dump();
-  if (compact.size() + static_cast<std::size_t>(indent) <= 100 || !v.is_structured() || v.empty()) {
-    out += compact;
-    return;
-  }
-  const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
-  out += v.is_object() ? "{\n" : "[\n";
-  bool first = true;
-  for (auto it = v.begin(); it != v.end(); ++it) {
-    if (!first) out += ",\n";
-    first = false;
-    out += pad;
-    if (v.is_object()) out += J(it.key()).dump() + ": ";
-    print(*it, indent + 2, out);
-  }
-  out += "\n" + std::string(static_cast<std::size_t>(indent), ' ') + (v.is_object() ? "}" : "]");
-}
-
 }  // namespace
 
 std::string write_motion(const Motion& m) { return motion(m).dump(); }
@@ -70,8 +42,8 @@ std::string write_scene(const Scene& s) {
   J doc;
   doc["format"] = "kvd-scene/1";
   if (!s.name.empty()) doc["name"] = s.name;
-  J time{{"start", number(s.start)}};
-  if (s.end) time["end"] = number(*s.end);
+  J time{{"start", number_json(s.start)}};
+  if (s.end) time["end"] = number_json(*s.end);
   doc["time"] = time;
   doc["decomposition"] = J{{"x", point4(s.x)}, {"z", point4(s.z)}};
   if (s.priority_spec.order) {
@@ -91,8 +63,8 @@ std::string write_scene(const Scene& s) {
     J verts = J::array();
     for (std::size_t v = o.first_vertex; v < o.first_vertex + o.vertex_count; ++v) {
       const QPoint& p = s.rest[v];
-      if (p[3] == 1) verts.push_back(J::array({number(p[0]), number(p[1]), number(p[2])}));
-      else verts.push_back(J::array({number(p[0]), number(p[1]), number(p[2]), number(p[3])}));
+      if (p[3] == 1) verts.push_back(J::array({number_json(p[0]), number_json(p[1]), number_json(p[2])}));
+      else verts.push_back(J::array({number_json(p[0]), number_json(p[1]), number_json(p[2]), number_json(p[3])}));
     }
     obj["vertices"] = verts;
     J tris = J::array();
@@ -104,9 +76,7 @@ std::string write_scene(const Scene& s) {
     objects.push_back(obj);
   }
   doc["objects"] = objects;
-  std::string out;
-  print(doc, 0, out);
-  return out + "\n";
+  return pretty_json(doc);
 }
 
 }  // namespace kvd::scene

@@ -1,5 +1,7 @@
 #include "kvd/detail/scene/span_check.hpp"
 
+#include <sstream>
+
 #include "kvd/detail/kernel/descartes.hpp"
 
 namespace kvd::scene {
@@ -33,6 +35,18 @@ std::optional<Exact_time> first_common_zero(const std::vector<QPoly>& ps, const 
   for (const QPoly& p : ps)
     if (!p.is_zero()) g = zpoly::gcd(g, zpoly::to_zpoly(p));
   return first_root(g, start, end);
+}
+
+std::string instant_text(const Exact_time& t) {
+  if (t.is_rational()) return " at t = " + t.to_string();
+  std::ostringstream approx;
+  approx.precision(17);
+  approx << t.to_double();
+  return " at t = " + t.to_string() + " (about " + approx.str() + ")";
+}
+
+std::string span_text(const std::optional<Q>& end) {
+  return end ? "inside the time span" : "after the start time (the scene has no end)";
 }
 
 }  // namespace kvd::scene

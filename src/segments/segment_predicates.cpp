@@ -26,32 +26,45 @@ R dot(const H<R>& a, const H<R>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+// The endpoints over one ring, with the lines and crossings made from them,
+// kept when `cache` is set (the unperturbed ring: a construction asks for the
+// same lines and crossings many times).
 template <class R>
-H<R> line(const std::vector<H<R>>& e, std::size_t s) {
-  return wedge(e[2 * s], e[2 * s + 1]);
-}
+class View {
+public:
+  View(const std::vector<H<R>>& e, Geometry_cache<R>* cache) : e_(e), cache_(cache) {}
 
-template <class R>
-H<R> point(const std::vector<H<R>>& e, const Site_point& p) {
-  if (p.kind == Site_point::Kind::endpoint) return e[p.a];
-  return wedge(line(e, p.a), line(e, p.b));
-}
+  const H<R>& endpoint(std::size_t k) const { return e_[k]; }
+  H<R> line(std::size_t s) const {
+    if (!cache_) return wedge(e_[2 * s], e_[2 * s + 1]);
+    auto& l = cache_->lines[s];
+    if (!l) l = wedge(e_[2 * s], e_[2 * s + 1]);
+    return *l;
+  }
+  H<R> point(const Site_point& p) const {
+    if (p.kind == Site_point::Kind::endpoint) return e_[p.a];
+    if (!cache_) return wedge(line(p.a), line(p.b));
+    const std::uint64_t key = (std::uint64_t(p.a) << 32) | p.b;
+    auto it = cache_->crossings.find(key);
+    if (it == cache_->crossings.end()) it = cache_->crossings.emplace(key, wedge(line(p.a), line(p.b))).first;
+    return it->second;
+  }
+  // x(P1) - x(P0) of segment s, times W0 W1 > 0.
+  R dx(std::size_t s) const { return e_[2 * s + 1][0] * e_[2 * s][2] - e_[2 * s][0] * e_[2 * s + 1][2]; }
 
-// x(P1) - x(P0) of segment s, times W0 W1 > 0.
-template <class R>
-R dx(const std::vector<H<R>>& e, std::size_t s) {
-  return e[2 * s + 1][0] * e[2 * s][2] - e[2 * s][0] * e[2 * s + 1][2];
-}
+  // The factors of side(q, s) for a point q given by coordinates:
+  // det[P0; P1; q] is the orientation of (P0, P1, q) times W0 W1 W_q, and
+  // "left of P0 -> P1" is "above" when x(P0) < x(P1).
+  std::vector<R> side_factors(const H<R>& q, std::size_t s, bool q_is_endpoint) const {
+    std::vector<R> f{dot(line(s), q), dx(s)};
+    if (!q_is_endpoint) f.push_back(q[2]);
+    return f;
+  }
 
-// The factors of side(q, s) for a point q given by coordinates: det[P0; P1; q]
-// is the orientation of (P0, P1, q) times W0 W1 W_q, and "left of P0 -> P1"
-// is "above" when x(P0) < x(P1).
-template <class R>
-std::vector<R> side_factors(const std::vector<H<R>>& e, const H<R>& q, std::size_t s, bool q_is_endpoint) {
-  std::vector<R> f{dot(line(e, s), q), dx(e, s)};
-  if (!q_is_endpoint) f.push_back(q[2]);
-  return f;
-}
+private:
+  const std::vector<H<R>>& e_;
+  Geometry_cache<R>* cache_;
+};
 
 }  // namespace
 
@@ -82,6 +95,7 @@ Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s) : 
                           Poly<P>(std::vector<P>{p[2]})});
     endpoints_.push_back(std::move(p));
   }
+  cache_.lines.resize(s.segments.size());
 }
 
 template <class K>
@@ -90,11 +104,29 @@ bool Segment_predicates<K>::vanishes(const P& f) const {
                      [&](const auto& c) { return k_->sign(c) == 0; });
 }
 
+Segment_event event_of(const Segment_certificate_key& k, const std::vector<std::size_t>& rank) {
+  using Kind = Segment_certificate_key::Kind;
+  const bool endpoint = k.p.kind == Site_point::Kind::endpoint;
+  switch (k.kind) {
+    case Kind::x_order: {
+      const bool both = endpoint && k.q.kind == Site_point::Kind::endpoint;
+      if (both && k.p.a / 2 == k.q.a / 2) return Segment_event::flip;
+      return endpoint || k.q.kind == Site_point::Kind::endpoint ? Segment_event::vertex : Segment_event::edge;
+    }
+    case Kind::side:
+      return endpoint && rank[k.i] < rank[k.p.a / 2] ? Segment_event::intersection : Segment_event::edge;
+    case Kind::order_at: return Segment_event::edge;
+  }
+  return Segment_event::edge;
+}
+
 template <class K>
 template <class F>
-Segment_sign Segment_predicates<K>::decide(const F& factors, const Time& t) const {
-  const std::vector<P> v = factors(endpoints_);
+Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const F& factors,
+                                           const Time& t) const {
+  const std::vector<P> v = factors(View<P>(endpoints_, &cache_));
   std::optional<std::vector<Poly<P>>> expanded;
+  std::vector<P> deciding;
   int sign = 1;
   Segment_rule rule = Segment_rule::value;
   for (std::size_t f = 0; f < v.size(); ++f) {
@@ -105,14 +137,16 @@ Segment_sign Segment_predicates<K>::decide(const F& factors, const Time& t) cons
         rule = std::max(rule, Segment_rule::after);
       }
       sign *= s;
+      if (recorded_ && v[f].degree() > 0) deciding.push_back(v[f]);
       continue;
     }
-    if (!expanded) expanded = factors(perturbed_);
+    if (!expanded) expanded = factors(View<Poly<P>>(perturbed_, nullptr));
     int s = 0;
     for (const P& c : (*expanded)[f].coefficients()) {
       if (vanishes(c)) continue;
       s = k_->sign_at(c, t);
       if (s == 0) s = k_->sign_after(c, t);
+      if (recorded_ && c.degree() > 0) deciding.push_back(c);
       break;
     }
     if (s == 0) throw std::logic_error("segment predicate: every ε-coefficient vanishes (see proofs/segment-perturbation.md)");
@@ -120,6 +154,7 @@ Segment_sign Segment_predicates<K>::decide(const F& factors, const Time& t) cons
     sign *= s;
   }
   ++(rule == Segment_rule::value ? counts_.value : rule == Segment_rule::after ? counts_.after : counts_.perturbation);
+  if (recorded_) (*recorded_)[key] = std::move(deciding);
   return {sign, rule};
 }
 
@@ -130,8 +165,9 @@ Segment_sign Segment_predicates<K>::compare_x(const Site_point& a, const Site_po
     return {0, Segment_rule::identity};
   }
   return decide(
+      {Segment_certificate_key::Kind::x_order, a, b, 0, 0},
       [&](const auto& e) {
-        const auto pa = point(e, a), pb = point(e, b);
+        const auto pa = e.point(a), pb = e.point(b);
         std::vector<std::decay_t<decltype(pa[0])>> f{pa[0] * pb[2] - pb[0] * pa[2]};
         if (a.kind == Site_point::Kind::crossing) f.push_back(pa[2]);
         if (b.kind == Site_point::Kind::crossing) f.push_back(pb[2]);
@@ -146,8 +182,8 @@ Segment_sign Segment_predicates<K>::side(const Site_point& p, std::size_t s, con
     ++counts_.identity;
     return {0, Segment_rule::identity};
   }
-  return decide([&](const auto& e) { return side_factors(e, point(e, p), s, p.kind == Site_point::Kind::endpoint); },
-                t);
+  return decide({Segment_certificate_key::Kind::side, p, {}, static_cast<std::uint32_t>(s), 0},
+                [&](const auto& e) { return e.side_factors(e.point(p), s, p.kind == Site_point::Kind::endpoint); }, t);
 }
 
 template <class K>
@@ -159,11 +195,12 @@ Segment_sign Segment_predicates<K>::order_at(const Site_point& p, std::size_t i,
   }
   // The point of the line of i above or below p, then its side of j.
   return decide(
+      {Segment_certificate_key::Kind::order_at, p, {}, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)},
       [&](const auto& e) {
-        const auto q = point(e, p);
+        const auto q = e.point(p);
         using R = std::decay_t<decltype(q[0])>;
         const H<R> vertical{q[2], R(), -q[0]};
-        return side_factors(e, wedge(line(e, i), vertical), j, false);
+        return e.side_factors(wedge(e.line(i), vertical), j, false);
       },
       t);
 }

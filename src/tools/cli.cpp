@@ -42,8 +42,16 @@ bool Scene_args::take(Args& args, const std::string& a) {
 }
 
 scene::Scene Scene_args::load_scene(const std::string& command) const {
+  return read_scene(command, read_text(command));
+}
+
+std::string Scene_args::read_text(const std::string& command) const {
   if (!path) throw Usage_error("kvd " + command + ": missing the SCENE file (see kvd " + command + " --help)");
-  scene::Scene s = scene::load_scene(*path, load);
+  return scene::read_input(*path);
+}
+
+scene::Scene Scene_args::read_scene(const std::string& command, const std::string& text) const {
+  scene::Scene s = scene::read_scene(text, scene::input_name(*path), load);
   if (time) require_in_span(command, "--time", *time, s);
   return s;
 }

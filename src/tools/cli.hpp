@@ -66,8 +66,14 @@ struct Scene_args {
 
   // Consumes `a` (and its value) if it is one of these; returns whether it did.
   bool take(Args& args, const std::string& a);
-  // The scene (Usage_error if SCENE is missing, Scene_error if it is bad).
+  // The scene (Usage_error if SCENE is missing, Scene_error if it is bad):
+  // read_scene(command, read_text(command)).
   scene::Scene load_scene(const std::string& command) const;
+  // SCENE's bytes, read once (Usage_error if SCENE is missing, Scene_error
+  // if it cannot be read), for a command that dispatches on the format.
+  std::string read_text(const std::string& command) const;
+  // The triangle scene of SCENE's text (Scene_error if it is bad).
+  scene::Scene read_scene(const std::string& command, const std::string& text) const;
   // --view, which this command requires.
   const std::array<mpq_class, 3>& required_view(const std::string& command) const;
 };

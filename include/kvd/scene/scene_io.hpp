@@ -36,6 +36,8 @@ Scene load_scene(const std::string& path, const Load_options& options = {});
 // The bytes of a file (or of standard input for "-"), at most 64 MiB;
 // Scene_error naming it when it is missing, a folder, unreadable or larger.
 std::string read_input(const std::string& path);
+// How messages name the input at `path`: the path, or "(stdin)" for "-".
+std::string input_name(const std::string& path);
 // The scene as a `kvd-scene/1` document; numbers are written as exact strings.
 // read_scene(write_scene(s)) == s.
 std::string write_scene(const Scene& s);

@@ -23,6 +23,9 @@
 #include <array>
 #include <compare>
 #include <cstdint>
+#include <map>
+#include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "kvd/segments/segment_scene.hpp"
@@ -54,6 +57,26 @@ long perturbation_lambda(std::size_t e, std::size_t n);
 
 enum class Segment_rule { identity, value, after, perturbation };
 
+// A predicate with its arguments: the identity of a certificate.
+struct Segment_certificate_key {
+  enum class Kind : std::uint8_t { x_order, side, order_at };
+  Kind kind = Kind::x_order;
+  Site_point p, q;              // x_order: p against q; side and order_at: p
+  std::uint32_t i = 0, j = 0;   // side: the segment i; order_at: the lines of i and j
+  friend auto operator<=>(const Segment_certificate_key&, const Segment_certificate_key&) = default;
+};
+
+// The kinds of critical events of seed 003, section 3.1.
+enum class Segment_event { vertex, edge, intersection, flip };
+inline constexpr const char* segment_event_names[] = {"vertex", "edge", "intersection", "flip"};
+// The event a certificate's failure is (`rank`: the segments' priority
+// places): the x order of a segment's own endpoints, a flip; of an endpoint
+// and another point, a vertex event; an endpoint of s_i crossing s_j, an
+// intersection event when j has the higher priority (j < i) and an edge event
+// (s_j passes over a corner of a cell of s_i's) otherwise; anything about a
+// crossing or the order of two lines at a point, an edge event.
+Segment_event event_of(const Segment_certificate_key& k, const std::vector<std::size_t>& rank);
+
 struct Segment_sign {
   int sign;           // -1, 0, +1
   Segment_rule rule;  // the rule that decided
@@ -61,6 +84,13 @@ struct Segment_sign {
 
 struct Segment_rule_counts {
   long identity = 0, value = 0, after = 0, perturbation = 0;
+};
+
+// The lines of the segments and the crossings of two, made once.
+template <class R>
+struct Geometry_cache {
+  std::vector<std::optional<std::array<R, 3>>> lines;
+  std::unordered_map<std::uint64_t, std::array<R, 3>> crossings;
 };
 
 template <class K>
@@ -95,18 +125,28 @@ public:
   // How many signs each rule decided.
   const Segment_rule_counts& counts() const { return counts_; }
 
+  // While set, every sign decided by arithmetic is recorded with the
+  // polynomials in t that decided it (each factor's value or its first
+  // ε-coefficient that does not vanish, constants left out): the sign stays
+  // until one of them changes sign. A construction records its complete
+  // certificate set this way, since it branches on nothing else.
+  using Recorded = std::map<Segment_certificate_key, std::vector<P>>;
+  void record(Recorded* sink) const { recorded_ = sink; }
+
 private:
   // The single entry point: the sign of the product of the factors that
   // `factors(endpoints)` computes over either ring, each decided by rules 2-4.
   template <class F>
-  Segment_sign decide(const F& factors, const Time& t) const;
+  Segment_sign decide(const Segment_certificate_key& key, const F& factors, const Time& t) const;
   bool vanishes(const P& f) const;
 
   const K* k_;
   const Segment_scene* s_;
   std::vector<H<P>> endpoints_;           // W > 0 on the span
   std::vector<H<Poly<P>>> perturbed_;     // endpoint + ε g_e
+  mutable Geometry_cache<P> cache_;
   mutable Segment_rule_counts counts_;
+  mutable Recorded* recorded_ = nullptr;
 };
 
 }  // namespace kvd::segments

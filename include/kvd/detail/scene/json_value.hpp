@@ -44,4 +44,9 @@ bool parse_json(const std::string& text, Json_value& out, std::string& error);
 
 const char* kind_name(Json_value::Kind k);
 
+// The value of the string member `key` of the top-level object, read without
+// building the tree and stopping there; "" when the text is not an object
+// with such a member (or is malformed before it).
+std::string top_level_string(const std::string& text, const std::string& key);
+
 }  // namespace kvd::scene

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "kvd/kernel/exact_time.hpp"
 #include "kvd/scene/scene.hpp"
@@ -20,5 +21,12 @@ std::optional<Exact_time> first_zero(const QPoly& p, const Q& start, const std::
 // The first t in (start, end] at which the polynomials all vanish together
 // (the real roots of their gcd); nothing when they never do. Not all zero.
 std::optional<Exact_time> first_common_zero(const std::vector<QPoly>& ps, const Q& start, const std::optional<Q>& end);
+
+// How a rejection names an instant: " at t = 7/3", or " at t = root of [...]
+// in (lo, hi) (about 1.4142135623730951)".
+std::string instant_text(const Exact_time& t);
+// How it names the span searched: "inside the time span", or "after the
+// start time (the scene has no end)".
+std::string span_text(const std::optional<Q>& end);
 
 }  // namespace kvd::scene
