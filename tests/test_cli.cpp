@@ -542,3 +542,37 @@ TEST_CASE("kvd generate writes segment scenes that kvd info reads back", "[cli][
   CHECK(run("generate segments-random --length 2").status == 2);
   CHECK(run("generate segments-spiral").status == 2);
 }
+
+TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene", "[cli][build][simulate][segments]") {
+  const std::string dir = std::string(KVD_SOURCE_DIR) + "/data/segments/";
+  // Two segments crossing once: four vertex cuts, an intersection cut above
+  // and below the crossing, three fragments.
+  const Run b = run("build " + dir + "two-crossing.json --json");
+  REQUIRE(b.status == 0);
+  CHECK(b.out.find("\"segments\": 2, \"crossings\": 1, \"vertex_cuts\": 4, \"intersection_cuts\": 2, \"edge_cuts\": 3, "
+                   "\"nodes\": 19, \"leaves\": 10, \"height\": 7") != std::string::npos);
+  CHECK(run("build " + dir + "two-crossing.json --tree").out ==
+        "(V s0.0 . (V s0.1 (E s0 (V s1.1 (I s0xs1 . (E s1 . .)) .) (V s1.0 . (I s0xs1 (E s1 . .) .))) .))\n");
+  // The sinker passes over the floor's right endpoint at t = 3: one edge
+  // event, validated against a fresh build; the same in double.
+  for (const char* kernel : {"exact", "double"}) {
+    const Run s = run("simulate " + dir + "over-endpoint.json --json --list --kernel " + kernel);
+    REQUIRE(s.status == 0);
+    CHECK(s.out.find("\"batches\": 1, \"failures\": 1") != std::string::npos);
+    CHECK(s.out.find("\"failures_by_event\": {\"vertex\": 0, \"edge\": 1, \"intersection\": 0, \"flip\": 0}") !=
+          std::string::npos);
+    CHECK(s.out.find("\"validations\": 1, \"validation_failures\": 0") != std::string::npos);
+  }
+  CHECK(run("simulate " + dir + "over-endpoint.json --list").out.find("t = 3 (3): 1 failing, 1 edge, tree changed") !=
+        std::string::npos);
+  CHECK(run("simulate " + dir + "turning-vertical.json --json").out.find("\"flip\": 1") != std::string::npos);
+  // Flags of triangle scenes, a time outside the span: usage errors.
+  const Run queue = run("simulate " + dir + "over-endpoint.json --queue heap", "2>&1");
+  CHECK(queue.status == 2);
+  CHECK(queue.out.find("--queue: only for triangle scenes") != std::string::npos);
+  CHECK(run("build " + dir + "two-crossing.json --bsp").status == 2);
+  CHECK(run("simulate " + dir + "over-endpoint.json --validate end").status == 2);
+  const Run late = run("build " + dir + "over-endpoint.json --time 9", "2>&1");
+  CHECK(late.status == 2);
+  CHECK(late.out.find("--time 9 is outside the scene's time span [0, 7/2]") != std::string::npos);
+}

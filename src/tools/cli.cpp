@@ -56,10 +56,18 @@ scene::Scene Scene_args::read_scene(const std::string& command, const std::strin
   return s;
 }
 
-void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const scene::Scene& s) {
-  if (s.start <= t && (!s.end || t <= *s.end)) return;
+segments::Segment_scene Scene_args::read_segments(const std::string& command, const std::string& text) const {
+  segments::Segment_scene s =
+      segments::read_segments(text, scene::input_name(*path), segments::Segment_load_options{load.seed});
+  if (time) require_in_span(command, "--time", *time, s.start, s.end);
+  return s;
+}
+
+void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const mpq_class& start,
+                     const std::optional<mpq_class>& end) {
+  if (start <= t && (!end || t <= *end)) return;
   throw Usage_error("kvd " + command + ": " + flag + " " + t.get_str() + " is outside the scene's time span [" +
-                    s.start.get_str() + ", " + (s.end ? s.end->get_str() : "no end") + "]");
+                    start.get_str() + ", " + (end ? end->get_str() : "no end") + "]");
 }
 
 const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& command) const {

@@ -20,6 +20,7 @@
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
+#include "kvd/segments/segment_io.hpp"
 #include "kvd/detail/scene/scene_numbers.hpp"
 #include "kvd/tree/build.hpp"
 
@@ -74,6 +75,9 @@ struct Scene_args {
   std::string read_text(const std::string& command) const;
   // The triangle scene of SCENE's text (Scene_error if it is bad).
   scene::Scene read_scene(const std::string& command, const std::string& text) const;
+  // The segment scene of SCENE's text (kvd-segments/1), --seed and --time
+  // checked alike.
+  segments::Segment_scene read_segments(const std::string& command, const std::string& text) const;
   // --view, which this command requires.
   const std::array<mpq_class, 3>& required_view(const std::string& command) const;
 };
@@ -117,7 +121,12 @@ void require_representable(const std::string& path, const scene::Scene& s, const
 }
 
 // Usage_error unless start <= t <= end (the span's end, when it has one).
-void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const scene::Scene& s);
+void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const mpq_class& start,
+                     const std::optional<mpq_class>& end);
+inline void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t,
+                            const scene::Scene& s) {
+  require_in_span(command, flag, t, s.start, s.end);
+}
 
 // An exact number given to option `flag` ("1/3", "0.25"); Usage_error if not.
 mpq_class exact_option(const std::string& command, const std::string& flag, const std::string& text);

@@ -7,6 +7,7 @@
 
 #include "cli.hpp"
 #include "json_out.hpp"
+#include "segment_commands.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/detail/scene/exact_number.hpp"
@@ -42,6 +43,13 @@ const char* const build_help =
     "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash,\n"
     "                  filter (the exact kernel's filter statistics, README;\n"
     "                  null for double and mpfr)\n"
+    "\n"
+    "For a kvd-segments/1 scene (told apart by its \"format\"): the cylindrical\n"
+    "BSP of the segments (seed 003, section 2.1) just after T: segments,\n"
+    "crossings at T, vertex, intersection and edge cuts, nodes, leaves, height,\n"
+    "how many signs each rule decided, seconds; --tree prints the tree as nested\n"
+    "parentheses ((V s3.0 L R) a vertex cut, (I s1xs4 L R) an intersection cut,\n"
+    "(E s2 BELOW ABOVE) an edge cut, . a leaf); --bsp does not apply.\n"
     "\n"
     "Exit status: 0 on success, 2 on a bad scene (including triangles that\n"
     "intersect at T) or bad usage.\n";
@@ -108,7 +116,15 @@ int build(Args& args) {
     else if (a == "--no-filter") filter = false;
     else if (!sa.take(args, a)) args.unknown(a);
   }
-  const scene::Scene s = sa.load_scene("build");
+  const std::string text = sa.read_text("build");
+  if (segments::scene_format(text) == "kvd-segments/1") {
+    std::vector<std::string> triangle_only;
+    if (baseline) triangle_only.push_back("--bsp");
+    if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
+    refuse_triangle_flags("build", triangle_only);
+    return segment_build(sa, text, kernel, filter, tree_only);
+  }
+  const scene::Scene s = sa.read_scene("build", text);
   const scene::Q time = sa.time ? *sa.time : s.start;
   if (baseline) return run_bsp(s, time, sa.json);
   return with_kernel("build", kernel, [&](const auto& k) {

@@ -8,6 +8,7 @@
 #include "cli.hpp"
 #include "json_out.hpp"
 #include "report.hpp"
+#include "segment_commands.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/scene/scene_io.hpp"
@@ -84,6 +85,13 @@ const char* const simulate_help =
     "           \"unrepaired\"},\n"
     "           \"tree_update_share\": X, \"certificate_update_share\": X,\n"
     "           \"filter\": {...} (the exact kernel's filter statistics, README; null otherwise)}\n"
+    "\n"
+    "For a kvd-segments/1 scene: the kinetic cylindrical BSP (seed 003, section\n"
+    "3.1). Its certificates are the signs the construction evaluated; each\n"
+    "failure is a vertex, edge, intersection or flip event; the tree just after\n"
+    "a batch is built again. Takes --events, --until, --validate every|none,\n"
+    "--kernel, --epsilon, --no-filter, --list, --json (failures_by_event,\n"
+    "changed_batches_by_event, batches, validations, update_ms, batch_list).\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation or a floating-point run\n"
     "stuck at one instant, 2 on bad input.\n";
@@ -312,12 +320,15 @@ int simulate(Args& args) {
   std::string kernel = "exact";
   bool list = false, filter = true;
   std::optional<kinetic::Update> update;
+  std::vector<std::string> triangle_only;  // flags a segment scene refuses
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
       std::cout << simulate_help;
       return 0;
     }
+    for (const char* f : {"--trace", "--certificates", "--queue", "--update", "--upkeep", "--collisions"})
+      if (a == f) triangle_only.push_back(a);
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--kernel") kernel = args.value(a);
     else if (a == "--epsilon") epsilon = exact_option("simulate", a, args.value(a));
@@ -347,7 +358,16 @@ int simulate(Args& args) {
     throw Usage_error("kvd simulate: the full certificate set needs --update rebuild");
   o.update = update.value_or(o.certificates == kinetic::Certificate_set::full ? kinetic::Update::rebuild
                                                                             : kinetic::Update::local);
-  const scene::Scene s = sa.load_scene("simulate");
+  const std::string text = sa.read_text("simulate");
+  if (segments::scene_format(text) == "kvd-segments/1") {
+    if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
+    refuse_triangle_flags("simulate", triangle_only);
+    if (o.validate == kinetic::Validation::end)
+      throw Usage_error("kvd simulate: --validate end: a segment scene takes every or none");
+    return segment_simulate(sa, text,
+                            {o.max_events, o.until, o.validate == kinetic::Validation::every, kernel, epsilon, filter, list});
+  }
+  const scene::Scene s = sa.read_scene("simulate", text);
   if (o.until) require_in_span("simulate", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd simulate");
   return with_kernel(

@@ -1,0 +1,46 @@
+// kvd build and kvd simulate on segment scenes (kvd-segments/1): the
+// cylindrical BSP of seed 003 and its kinetic version. The commands read the
+// file once and come here when its "format" says so.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <optional>
+#include <string>
+
+#include "cli.hpp"
+#include "kvd/segments/segment_scene.hpp"
+
+namespace kvd::cli {
+
+int segment_build(const Scene_args& sa, const std::string& text, const std::string& kernel, bool filter,
+                  bool tree_only);
+
+struct Segment_run_options {
+  std::size_t max_events = 100;
+  std::optional<mpq_class> until;
+  bool validate = true;
+  std::string kernel = "exact";
+  std::optional<mpq_class> epsilon;
+  bool filter = true;
+  bool list = false;
+};
+
+int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o);
+
+// Scene_error naming the first segment with a number K's field cannot hold
+// (1e400 is infinite in double); the exact kernel holds all.
+template <class K>
+void require_representable(const std::string& path, const segments::Segment_scene& s, const K& k) {
+  for (std::size_t e = 0; e < s.endpoint_count(); ++e)
+    for (const auto& c : s.endpoint(e))
+      for (const auto& q : c.coefficients())
+        if (!is_finite(from_rational<typename K::FT>(q)))
+          throw scene::Scene_error(path + ": /segments/" + std::to_string(e / 2) + ": a number that is not finite in the " +
+                                   kernel_label(k) + " kernel; use --kernel exact or mpfr:BITS");
+}
+
+// Usage_error naming the flags given that only triangle scenes take.
+void refuse_triangle_flags(const std::string& command, const std::vector<std::string>& given);
+
+}  // namespace kvd::cli

@@ -1,0 +1,133 @@
+// kvd simulate on a segment scene: the kinetic cylindrical BSP (seed 003,
+// section 3.1), its batches and the events by kind.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <numeric>
+
+#include "json_out.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
+#include "report.hpp"
+#include "segment_commands.hpp"
+
+namespace kvd::cli {
+
+namespace {
+
+std::string ms_text(double ms) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", ms);
+  return buf;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+template <class K>
+int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
+  using Kinetic = segments::Kinetic_segment_bsp<K>;
+  Kinetic kin(k, s, o.validate);
+  const bool bounded = o.until.has_value();
+  const typename K::Time until = bounded ? k.time(from_rational<typename K::FT>(*o.until)) : kin.now();
+  const auto progress = progress_every_few_seconds("kvd simulate");
+  std::vector<typename Kinetic::Batch> batches;
+  std::size_t failures = 0;
+  std::string stopped = "exhausted";
+  while (const auto next = kin.next_event_time()) {
+    if (bounded && k.compare(*next, until) > 0) {
+      stopped = "limit";
+      break;
+    }
+    if (failures >= o.max_events) {
+      stopped = "events";
+      break;
+    }
+    batches.push_back(kin.advance());
+    failures += batches.back().failing.size();
+    progress(batches.size(), failures);
+  }
+  std::array<std::size_t, 4> events{}, changed_by{};
+  std::size_t changed = 0, simultaneous = 0;
+  std::vector<double> ms;
+  for (const auto& b : batches) {
+    for (std::size_t e = 0; e < 4; ++e) {
+      events[e] += b.events[e];
+      changed_by[e] += b.changed && b.events[e] > 0;
+    }
+    changed += b.changed;
+    simultaneous += b.failing.size() > 1;
+    ms.push_back(b.update_seconds * 1e3);
+  }
+  const segments::Bsp_counts c = kin.tree().counts();
+  const double mean = ms.empty() ? 0 : std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
+  const double max = ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end());
+  const bool failed = !kin.validation_failures().empty();
+  if (sa.json) {
+    Json by_kind = Json::object(), changing = Json::object();
+    for (std::size_t e = 0; e < 4; ++e) {
+      by_kind[segments::segment_event_names[e]] = events[e];
+      changing[segments::segment_event_names[e]] = changed_by[e];
+    }
+    Json list = Json::array();
+    if (o.list)
+      for (const auto& b : batches) {
+        Json kinds = Json::object();
+        for (std::size_t e = 0; e < 4; ++e)
+          if (b.events[e]) kinds[segments::segment_event_names[e]] = b.events[e];
+        list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
+                        {"failing", b.failing.size()}, {"events", kinds}, {"changed", b.changed},
+                        {"certificates", b.certificates}});
+      }
+    Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
+              {"failures", failures}, {"simultaneous_batches", simultaneous}, {"changed_batches", changed},
+              {"failures_by_event", by_kind}, {"changed_batches_by_event", changing}, {"stopped", stopped},
+              {"validation", o.validate ? "every" : "none"}, {"validations", kin.validations()},
+              {"validation_failures", kin.validation_failures().size()},
+              {"time_reached_exact", k.to_string(kin.now())}, {"time_reached", approx(k.to_double(kin.now()))},
+              {"nodes", c.nodes}, {"height", c.height}, {"certificates", kin.certificates()},
+              {"update_ms", {{"mean", decimal(ms_text(mean))}, {"median", decimal(ms_text(median(ms)))},
+                             {"max", decimal(ms_text(max))}}},
+              {"update", "rebuild"}, {"filter", filter_json(k)}};
+    if (o.list) j["batch_list"] = list;
+    std::cout << json_line(j) << "\n";
+  } else {
+    if (o.list)
+      for (const auto& b : batches) {
+        std::cout << "t = " << k.to_string(b.time) << " (" << approx(k.to_double(b.time)) << "): " << b.failing.size()
+                  << " failing,";
+        for (std::size_t e = 0; e < 4; ++e)
+          if (b.events[e]) std::cout << " " << b.events[e] << " " << segments::segment_event_names[e];
+        std::cout << (b.changed ? ", tree changed" : ", tree unchanged") << "\n";
+      }
+    std::cout << "kernel:        " << kernel_label(k) << "\nsegments:      " << s.segments.size()
+              << "\nbatches:       " << batches.size() << " (" << changed << " changed the tree, " << simultaneous
+              << " simultaneous)\nfailures:      " << failures << " (";
+    for (std::size_t e = 0; e < 4; ++e)
+      std::cout << (e ? ", " : "") << events[e] << " " << segments::segment_event_names[e];
+    std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(kin.now())
+              << "\nvalidations:   " << kin.validations() << " (" << kin.validation_failures().size() << " failed)"
+              << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << kin.certificates()
+              << " certificates\nupdate (ms):   mean " << ms_text(mean) << ", median " << ms_text(median(ms))
+              << ", max " << ms_text(max) << " (the tree built again at each batch)\n";
+  }
+  for (const auto& f : kin.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o) {
+  const segments::Segment_scene s = sa.read_segments("simulate", text);
+  if (o.until) require_in_span("simulate", "--until", *o.until, s.start, s.end);
+  return with_kernel("simulate", o.kernel, [&](const auto& k) {
+    require_representable(*sa.path, s, k);
+    return run(k, sa, s, o);
+  }, o.epsilon, o.filter);
+}
+
+}  // namespace kvd::cli
