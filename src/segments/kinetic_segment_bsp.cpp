@@ -10,10 +10,11 @@
 namespace kvd::segments {
 
 template <class K>
-Kinetic_segment_bsp<K>::Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate)
+Kinetic_segment_bsp<K>::Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate, Segment_update update)
     : k_(k),
       scene_(std::move(scene)),
       validate_(validate),
+      update_(update),
       now_(k_.time(from_rational<typename K::FT>(scene_.start))),
       pred_(k_, scene_) {
   rebuild();
@@ -50,7 +51,7 @@ std::optional<typename K::Time> Kinetic_segment_bsp<K>::next_event_time() {
 template <class K>
 typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   const Time t = *next_event_time();
-  Batch b{t, {}, {}, false, 0, 0};
+  Batch b{t, {}, {}, false, 0, 0, 0};
   for (const auto& [key, time] : failing_) {
     if (k_.compare(time, t) == 0) {
       b.failing.push_back(key);
@@ -71,6 +72,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   rebuild();
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.changed = tree_.text() != before;
+  b.nodes_rebuilt = tree_.counts().nodes;
   b.certificates = certificates_.size();
   return b;
 }

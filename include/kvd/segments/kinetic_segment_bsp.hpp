@@ -25,6 +25,12 @@
 
 namespace kvd::segments {
 
+// How the tree just after a batch is made: by replaying, in the subtree of
+// each node where a failing certificate was decided, the insertions that
+// reached it (local), or by building the whole tree again (rebuild, the
+// reference).
+enum class Segment_update { local, rebuild };
+
 template <class K>
 class Kinetic_segment_bsp {
 public:
@@ -37,12 +43,13 @@ public:
     bool changed = false;                          // the tree just after differs from the one before
     std::size_t certificates = 0;                  // in force after the batch
     double update_seconds = 0;                     // the tree and its certificates made again
+    std::size_t nodes_rebuilt = 0;                 // nodes made again (all of them with rebuild)
   };
 
   // The scene is copied. With `validate`, the tree in force is compared,
   // before each batch, with a fresh build at an instant strictly between the
   // last batch and this one (a rational in the exact kernel).
-  Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate);
+  Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate, Segment_update update = Segment_update::local);
 
   const Time& now() const { return now_; }
   const Segment_scene& scene() const { return scene_; }
@@ -65,6 +72,7 @@ private:
   K k_;
   Segment_scene scene_;
   bool validate_;
+  Segment_update update_;
   Time now_;
   Segment_predicates<K> pred_;
   Cylindrical_bsp tree_;
