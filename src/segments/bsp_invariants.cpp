@@ -26,7 +26,7 @@ public:
   std::vector<std::string> run() {
     cells(0, Cell{});
     for (std::size_t s = 0; s < p_.size(); ++s) tiling(s);
-    for (std::size_t n = 0; n < b_.nodes.size(); ++n) {
+    for (const std::size_t n : b_.preorder()) {
       const Bsp_node& node = b_.nodes[n];
       if (node.kind == Cut_kind::edge) fragment(n);
       if (node.kind != Cut_kind::leaf) continue;

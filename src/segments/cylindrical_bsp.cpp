@@ -1,143 +1,246 @@
-// The static construction of the cylindrical BSP (seed 003, section 2.1).
+// The construction of the cylindrical BSP (seed 003, section 2.1), and its
+// replay in one subtree (kvd/detail/segments/bsp_builder.hpp).
 #include "kvd/segments/cylindrical_bsp.hpp"
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::segments {
 
-namespace {
+template <class K>
+Bsp_builder<K>::Bsp_builder(const Segment_predicates<K>& pred, const Time& t, Cylindrical_bsp& bsp, Build_log* log)
+    : p_(pred), t_(t), b_(bsp), log_(log) {}
 
 template <class K>
-class Builder {
-public:
-  using Time = typename K::Time;
-  Builder(const Segment_predicates<K>& pred, const Time& t, Cylindrical_bsp& bsp) : p_(pred), t_(t), b_(bsp) {
-    b_.nodes.assign(1, Bsp_node{});
-  }
+void Bsp_builder<K>::start() {
+  b_.nodes.assign(1, Bsp_node{});
+  if (log_) *log_ = Build_log{{{}}, {}};
+  added_ = 1;
+}
 
-  void insert(std::uint32_t i) {
-    for (const std::size_t e : {2 * std::size_t(i), 2 * std::size_t(i) + 1}) {
-      const Site_point q = Site_point::endpoint(e);
-      split(locate(q, 0), Cut_kind::vertex, q);
-    }
-    const Site_point lo = Site_point::endpoint(p_.left_endpoint(i, t_)), hi = Site_point::endpoint(p_.right_endpoint(i, t_));
-    std::vector<std::uint32_t> crossed;
-    walk(0, i, lo, hi, [](std::size_t) {}, [&](std::uint32_t j) { crossed.push_back(j); });
-    const auto& rank = p_.scene().rank;
-    std::sort(crossed.begin(), crossed.end(), [&](std::uint32_t a, std::uint32_t b) { return rank[a] < rank[b]; });
-    for (const std::uint32_t j : crossed) {
-      const Site_point q = Site_point::crossing(i, j);
-      split(locate(q, +1), Cut_kind::intersection, q);
-      split(locate(q, -1), Cut_kind::intersection, q);
-    }
-    walk(0, i, lo, hi, [&](std::size_t leaf) { split_edge(leaf, i); }, [](std::uint32_t) {});
+template <class K>
+void Bsp_builder<K>::insert(std::uint32_t i) {
+  for (const std::size_t e : {2 * std::size_t(i), 2 * std::size_t(i) + 1}) {
+    const Site_point q = Site_point::endpoint(e);
+    split(locate(0, {Arrival::Kind::vertex, i, q, {}, 0}), Cut_kind::vertex, q);
   }
+  p_.at_node(-1);  // which endpoint is left is no node's decision
+  const Site_point lo = Site_point::endpoint(p_.left_endpoint(i, t_)), hi = Site_point::endpoint(p_.right_endpoint(i, t_));
+  insert_crossings(0, i, lo, hi, {});
+  walk(0, {Arrival::Kind::edges, i, lo, hi, 0}, [&](std::size_t leaf) { split_edge(leaf, i); }, [](std::uint32_t) {});
+}
 
-private:
-  std::size_t add_leaf(const Cell& c) {
-    b_.nodes.push_back(Bsp_node{});
-    b_.nodes.back().cell = c;
-    return b_.nodes.size() - 1;
-  }
-
-  void split(std::size_t n, Cut_kind kind, const Site_point& q) {
-    Cell left = b_.nodes[n].cell, right = left;
-    left.right = q;
-    right.left = q;
-    const std::size_t l = add_leaf(left), r = add_leaf(right);
-    Bsp_node& node = b_.nodes[n];
-    node.kind = kind;
-    node.point = q;
-    node.child[0] = static_cast<std::int32_t>(l);
-    node.child[1] = static_cast<std::int32_t>(r);
-  }
-
-  void split_edge(std::size_t n, std::uint32_t s) {
-    Cell below = b_.nodes[n].cell, above = below;
-    below.roof = s;
-    above.floor = s;
-    const std::size_t l = add_leaf(below), r = add_leaf(above);
-    Bsp_node& node = b_.nodes[n];
-    node.kind = Cut_kind::edge;
-    node.segment = s;
-    node.child[0] = static_cast<std::int32_t>(l);
-    node.child[1] = static_cast<std::int32_t>(r);
-  }
-
-  // The leaf whose cell holds q; where q lies on an edge cut by construction
-  // (a crossing on the earlier segment's fragment), the leaf just above it
-  // (dir = +1) or just below it (dir = -1).
-  std::size_t locate(const Site_point& q, int dir) const {
-    std::size_t n = 0;
-    while (b_.nodes[n].kind != Cut_kind::leaf) {
-      const Bsp_node& node = b_.nodes[n];
-      int s;
-      if (node.kind == Cut_kind::edge) {
-        s = p_.side(q, node.segment, t_).sign;
-        if (s == 0) s = dir;
-      } else {
-        if (node.point == q) throw std::logic_error("cylindrical BSP: a point is cut twice in one region");
-        s = p_.compare_x(q, node.point, t_).sign;
+template <class K>
+void Bsp_builder<K>::replay(std::size_t v, const std::vector<Arrival>& arrivals) {
+  Bsp_node& node = b_.nodes[v];
+  node.kind = Cut_kind::leaf;
+  node.child[0] = node.child[1] = -1;
+  if (log_) log_->at[v].clear();
+  // A segment whose crossing walk reaches v finds again the crossings strictly
+  // inside v's part of it; a crossing at an end of that part was found above
+  // v, and its logged intersection cut is kept. Both go in the order of the
+  // whole construction: by the other segment's priority.
+  std::set<std::uint32_t> walked;
+  for (std::size_t k = 0; k < arrivals.size(); ++k) {
+    const Arrival& a = arrivals[k];
+    switch (a.kind) {
+      case Arrival::Kind::vertex: split(locate(v, a), Cut_kind::vertex, a.a); break;
+      case Arrival::Kind::crossings: {
+        walked.insert(a.segment);
+        std::vector<Arrival> kept;
+        for (std::size_t l = k + 1; l < arrivals.size(); ++l) {
+          const Arrival& c = arrivals[l];
+          if (c.kind == Arrival::Kind::intersection && c.segment == a.segment && (c.a == a.a || c.a == a.b))
+            kept.push_back(c);
+        }
+        insert_crossings(v, a.segment, a.a, a.b, kept);
+        break;
       }
-      n = static_cast<std::size_t>(node.child[s > 0]);
+      case Arrival::Kind::intersection:
+        if (!walked.count(a.segment)) split(locate(v, a), Cut_kind::intersection, a.a);
+        break;
+      case Arrival::Kind::edges:
+        walk(v, a, [&](std::size_t leaf) { split_edge(leaf, a.segment); }, [](std::uint32_t) {});
+        break;
     }
+  }
+}
+
+template <class K>
+std::size_t Bsp_builder<K>::add_leaf(const Cell& c, std::size_t parent) {
+  Bsp_node leaf;
+  leaf.cell = c;
+  leaf.parent = static_cast<std::int32_t>(parent);
+  ++added_;
+  if (log_ && !log_->free.empty()) {
+    const std::size_t n = log_->free.back();
+    log_->free.pop_back();
+    b_.nodes[n] = leaf;
+    log_->at[n].clear();
     return n;
   }
+  b_.nodes.push_back(leaf);
+  if (log_) log_->at.emplace_back();
+  return b_.nodes.size() - 1;
+}
 
-  // Visits the part of segment i with x in (lo, hi) down the subtree of n:
-  // `leaf(n)` at every leaf whose cell it meets, `crossing(j)` at every edge
-  // cut of an earlier segment j that it crosses inside the cut's cell.
-  template <class Leaf, class Crossing>
-  void walk(std::size_t n, std::uint32_t i, const Site_point& lo, const Site_point& hi, const Leaf& leaf,
-            const Crossing& crossing) {
-    const Bsp_node node = b_.nodes[n];  // a copy: `leaf` adds nodes
-    const auto left = static_cast<std::size_t>(node.child[0]), right = static_cast<std::size_t>(node.child[1]);
-    switch (node.kind) {
-      case Cut_kind::leaf: leaf(n); return;
-      case Cut_kind::vertex:
-      case Cut_kind::intersection: {
-        const Site_point& c = node.point;
-        if (c == lo || p_.compare_x(c, lo, t_).sign < 0) return walk(right, i, lo, hi, leaf, crossing);
-        if (c == hi || p_.compare_x(c, hi, t_).sign > 0) return walk(left, i, lo, hi, leaf, crossing);
-        walk(left, i, lo, c, leaf, crossing);
-        walk(right, i, c, hi, leaf, crossing);
-        return;
-      }
-      case Cut_kind::edge: {
-        const std::uint32_t j = node.segment;
-        int a = p_.order_at(lo, i, j, t_).sign, b = p_.order_at(hi, i, j, t_).sign;
-        if (a == 0) a = b;
-        if (b == 0) b = a;
-        if (a == b) return walk(a > 0 ? right : left, i, lo, hi, leaf, crossing);
-        crossing(j);
-        const Site_point x = Site_point::crossing(i, j);
-        walk(a > 0 ? right : left, i, lo, x, leaf, crossing);
-        walk(b > 0 ? right : left, i, x, hi, leaf, crossing);
-        return;
-      }
+template <class K>
+void Bsp_builder<K>::split(std::size_t n, Cut_kind kind, const Site_point& q) {
+  Cell left = b_.nodes[n].cell, right = left;
+  left.right = q;
+  right.left = q;
+  const std::size_t l = add_leaf(left, n), r = add_leaf(right, n);
+  Bsp_node& node = b_.nodes[n];
+  node.kind = kind;
+  node.point = q;
+  node.child[0] = static_cast<std::int32_t>(l);
+  node.child[1] = static_cast<std::int32_t>(r);
+}
+
+template <class K>
+void Bsp_builder<K>::split_edge(std::size_t n, std::uint32_t s) {
+  Cell below = b_.nodes[n].cell, above = below;
+  below.roof = s;
+  above.floor = s;
+  const std::size_t l = add_leaf(below, n), r = add_leaf(above, n);
+  Bsp_node& node = b_.nodes[n];
+  node.kind = Cut_kind::edge;
+  node.segment = s;
+  node.child[0] = static_cast<std::int32_t>(l);
+  node.child[1] = static_cast<std::int32_t>(r);
+}
+
+template <class K>
+void Bsp_builder<K>::arrive(std::size_t n, const Arrival& a) {
+  if (log_) log_->at[n].push_back(a);
+  p_.at_node(static_cast<std::int32_t>(n));
+}
+
+// The leaf whose cell holds a.a; where a.a lies on an edge cut by
+// construction (a crossing on the earlier segment's fragment), the leaf just
+// above it (a.dir = +1) or just below it (a.dir = -1).
+template <class K>
+std::size_t Bsp_builder<K>::locate(std::size_t from, const Arrival& a) {
+  std::size_t n = from;
+  for (;;) {
+    arrive(n, a);
+    if (b_.nodes[n].kind == Cut_kind::leaf) return n;
+    n = step(n, a);
+  }
+}
+
+// The child of cut node n that holds a.a (see locate).
+template <class K>
+std::size_t Bsp_builder<K>::step(std::size_t n, const Arrival& a) const {
+  const Bsp_node& node = b_.nodes[n];
+  int s;
+  if (node.kind == Cut_kind::edge) {
+    s = p_.side(a.a, node.segment, t_).sign;
+    if (s == 0) s = a.dir;
+  } else {
+    if (node.point == a.a) throw std::logic_error("cylindrical BSP: a point is cut twice in one region");
+    s = p_.compare_x(a.a, node.point, t_).sign;
+  }
+  return static_cast<std::size_t>(node.child[s > 0]);
+}
+
+// Phase 2 for segment i from node `from`: its crossings with the earlier
+// segments found there, each cut above and below, and the cuts `kept` (of
+// crossings found above `from`), in priority order of the other segment.
+template <class K>
+void Bsp_builder<K>::insert_crossings(std::size_t from, std::uint32_t i, const Site_point& lo, const Site_point& hi,
+                                      std::vector<Arrival> kept) {
+  walk(from, {Arrival::Kind::crossings, i, lo, hi, 0}, [](std::size_t) {}, [&](std::uint32_t j) {
+    for (const std::int8_t dir : {std::int8_t(1), std::int8_t(-1)})
+      kept.push_back({Arrival::Kind::intersection, i, Site_point::crossing(i, j), {}, dir});
+  });
+  const auto& rank = p_.scene().rank;
+  const auto other = [&](const Arrival& c) { return c.a.a == i ? c.a.b : c.a.a; };
+  std::stable_sort(kept.begin(), kept.end(), [&](const Arrival& x, const Arrival& y) {
+    return rank[other(x)] != rank[other(y)] ? rank[other(x)] < rank[other(y)] : x.dir > y.dir;
+  });
+  for (const Arrival& c : kept) {
+    // A crossing found below `from` is located from the root by the whole
+    // construction: its signs above `from` are certificates too.
+    const bool found_here = c.a != lo && c.a != hi;
+    if (found_here && from != 0) trace(from, c);
+    split(locate(from, c), Cut_kind::intersection, c.a);
+  }
+}
+
+// Decides the steps of locating a.a from the root down to `to`, which must be
+// on the way, without logging them.
+template <class K>
+void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
+  std::vector<std::size_t> path{to};  // `to` and its ancestors, bottom up
+  for (std::int32_t n = b_.nodes[to].parent; n >= 0; n = b_.nodes[static_cast<std::size_t>(n)].parent)
+    path.push_back(static_cast<std::size_t>(n));
+  for (std::size_t k = path.size() - 1; k > 0; --k) {
+    p_.at_node(static_cast<std::int32_t>(path[k]));
+    if (step(path[k], a) != path[k - 1])
+      throw std::logic_error("cylindrical BSP: a crossing found below a node does not reach it");
+  }
+}
+
+// Visits the part (a.a, a.b) in x of segment a.segment down the subtree of
+// n: `leaf(n)` at every leaf whose cell it meets, `crossing(j)` at every edge
+// cut of an earlier segment j that it crosses inside the cut's cell.
+template <class K>
+template <class Leaf, class Crossing>
+void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Crossing& crossing) {
+  arrive(n, a);
+  const Bsp_node node = b_.nodes[n];  // a copy: `leaf` adds nodes
+  const auto left = static_cast<std::size_t>(node.child[0]), right = static_cast<std::size_t>(node.child[1]);
+  const std::uint32_t i = a.segment;
+  const Site_point lo = a.a, hi = a.b;
+  switch (node.kind) {
+    case Cut_kind::leaf: leaf(n); return;
+    case Cut_kind::vertex:
+    case Cut_kind::intersection: {
+      const Site_point& c = node.point;
+      if (c == lo || p_.compare_x(c, lo, t_).sign < 0) return walk(right, a, leaf, crossing);
+      if (c == hi || p_.compare_x(c, hi, t_).sign > 0) return walk(left, a, leaf, crossing);
+      a.b = c;
+      walk(left, a, leaf, crossing);
+      a.a = c;
+      a.b = hi;
+      walk(right, a, leaf, crossing);
+      return;
+    }
+    case Cut_kind::edge: {
+      const std::uint32_t j = node.segment;
+      int at_lo = p_.order_at(lo, i, j, t_).sign, at_hi = p_.order_at(hi, i, j, t_).sign;
+      if (at_lo == 0) at_lo = at_hi;
+      if (at_hi == 0) at_hi = at_lo;
+      if (at_lo == at_hi) return walk(at_lo > 0 ? right : left, a, leaf, crossing);
+      crossing(j);
+      const Site_point x = Site_point::crossing(i, j);
+      a.b = x;
+      walk(at_lo > 0 ? right : left, a, leaf, crossing);
+      a.a = x;
+      a.b = hi;
+      walk(at_hi > 0 ? right : left, a, leaf, crossing);
+      return;
     }
   }
-
-  const Segment_predicates<K>& p_;
-  const Time& t_;
-  Cylindrical_bsp& b_;
-};
-
-}  // namespace
+}
 
 template <class K>
 Cylindrical_bsp build_cylindrical_bsp(const Segment_predicates<K>& pred, const typename K::Time& t) {
   Cylindrical_bsp bsp;
-  Builder<K> builder(pred, t, bsp);
+  Bsp_builder<K> builder(pred, t, bsp, nullptr);
+  builder.start();
   for (const std::size_t s : pred.scene().priority_order) builder.insert(static_cast<std::uint32_t>(s));
   return bsp;
 }
 
-#define KVD_INSTANTIATE_CYLINDRICAL_BSP(K) \
+#define KVD_INSTANTIATE_CYLINDRICAL_BSP(K)                                                                   \
+  template class Bsp_builder<K>;                                                                             \
   template Cylindrical_bsp build_cylindrical_bsp<K>(const Segment_predicates<K>&, const typename K::Time&);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_CYLINDRICAL_BSP)
 

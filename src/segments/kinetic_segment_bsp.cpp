@@ -1,6 +1,8 @@
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <iterator>
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
@@ -10,71 +12,215 @@
 namespace kvd::segments {
 
 template <class K>
-Kinetic_segment_bsp<K>::Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate, Segment_update update)
+Kinetic_segment_bsp<K>::Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate, Segment_update update,
+                                            const std::optional<Time>& from)
     : k_(k),
       scene_(std::move(scene)),
       validate_(validate),
       update_(update),
-      now_(k_.time(from_rational<typename K::FT>(scene_.start))),
+      now_(from ? *from : k_.time(from_rational<typename K::FT>(scene_.start))),
+      bounded_(scene_.end.has_value()),
+      end_(bounded_ ? k_.time(from_rational<typename K::FT>(*scene_.end)) : now_),
       pred_(k_, scene_) {
+  pred_.record([this](const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node) {
+    record(key, std::move(polys), node);
+  });
   rebuild();
 }
 
 template <class K>
-void Kinetic_segment_bsp<K>::rebuild() {
-  certificates_.clear();
-  pred_.record(&certificates_);
-  tree_ = build_cylindrical_bsp(pred_, now_);
-  pred_.record(nullptr);
-  failing_.clear();
-  // A failure after the span's end is no event; without an end, every one is.
-  const bool bounded = scene_.end.has_value();
-  const Time end = bounded ? k_.time(from_rational<typename K::FT>(*scene_.end)) : now_;
-  for (const auto& [key, polys] : certificates_) {
+void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node) {
+  auto [it, fresh] = certs_.try_emplace(key);
+  Certificate& c = it->second;
+  if (fresh) {
+    c.polys = std::move(polys);
+    c.version = ++versions_;
     std::optional<Time> first;
-    for (const auto& q : polys) {
+    for (const auto& q : c.polys) {
       const auto& r = roots_.next_root(k_, q, now_);
       if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
     }
-    if (first && !(bounded && k_.compare(*first, end) > 0)) failing_.emplace_back(key, *first);
+    // A failure after the span's end is no event.
+    if (first && !(bounded_ && k_.compare(*first, end_) > 0)) push({*first, key, c.version});
   }
+  if (std::find(c.nodes.begin(), c.nodes.end(), node) != c.nodes.end()) return;
+  c.nodes.push_back(node);
+  for (const Site_point& x : {key.p, key.q})
+    if (x.kind == Site_point::Kind::crossing) by_crossing_[x].emplace_back(key, node);
+  if (node < 0) return;
+  if (node_keys_.size() <= static_cast<std::size_t>(node)) node_keys_.resize(static_cast<std::size_t>(node) + 1);
+  node_keys_[static_cast<std::size_t>(node)].push_back(key);
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::push(const Entry& e) {
+  queue_.push_back(e);
+  std::push_heap(queue_.begin(), queue_.end(),
+                 [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::pop() {
+  std::pop_heap(queue_.begin(), queue_.end(),
+                [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
+  queue_.pop_back();
+}
+
+template <class K>
+bool Kinetic_segment_bsp<K>::stale(const Entry& e) const {
+  const auto it = certs_.find(e.key);
+  return it == certs_.end() || it->second.version != e.version;
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::rebuild() {
+  certs_.clear();
+  node_keys_.clear();
+  by_crossing_.clear();
+  queue_.clear();
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  builder.start();
+  for (const std::size_t s : scene_.priority_order) builder.insert(static_cast<std::uint32_t>(s));
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::drop(const Segment_certificate_key& key, std::int32_t node) {
+  for (const Site_point& x : {key.p, key.q}) {
+    const auto l = by_crossing_.find(x);
+    if (x.kind != Site_point::Kind::crossing || l == by_crossing_.end()) continue;
+    l->second.erase(std::remove(l->second.begin(), l->second.end(), std::pair{key, node}), l->second.end());
+    if (l->second.empty()) by_crossing_.erase(l);
+  }
+  const auto it = certs_.find(key);
+  if (it == certs_.end()) return;  // a failing certificate, gone already
+  auto& nodes = it->second.nodes;
+  const auto at = std::find(nodes.begin(), nodes.end(), node);
+  if (at == nodes.end()) return;  // made again since, elsewhere
+  nodes.erase(at);
+  if (nodes.empty()) certs_.erase(it);
+}
+
+// The node's certificates lose it; those decided nowhere else go.
+template <class K>
+void Kinetic_segment_bsp<K>::forget(std::size_t node) {
+  if (node >= node_keys_.size()) return;
+  for (const auto& key : node_keys_[node]) drop(key, static_cast<std::int32_t>(node));
+  node_keys_[node].clear();
+}
+
+template <class K>
+std::vector<Site_point> Kinetic_segment_bsp<K>::crossings_below(std::size_t v) const {
+  std::vector<Site_point> x;
+  for (const std::size_t n : tree_.preorder(v))
+    if (tree_.nodes[n].kind == Cut_kind::intersection) x.push_back(tree_.nodes[n].point);
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  return x;
+}
+
+template <class K>
+bool Kinetic_segment_bsp<K>::replay(std::size_t v, std::size_t& added) {
+  const std::string before = tree_.text(v);
+  const std::vector<Arrival> arrivals = log_.at[v];
+  const std::vector<Site_point> was = crossings_below(v);
+  for (const std::size_t n : tree_.preorder(v)) {
+    forget(n);
+    if (n != v) log_.free.push_back(n);
+  }
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  builder.replay(v, arrivals);
+  added += builder.added();
+  // A crossing cut below v before and nowhere now (both of a crossing's cuts
+  // lie below the node where it is found, and one found above v is kept):
+  // its certificates above v go.
+  const std::vector<Site_point> is = crossings_below(v);
+  std::vector<Site_point> gone;
+  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(gone));
+  for (const Site_point& x : gone) {
+    const auto it = by_crossing_.find(x);
+    if (it == by_crossing_.end()) continue;
+    for (const auto& [key, node] : std::vector(it->second)) drop(key, node);
+  }
+  return tree_.text(v) != before;
 }
 
 template <class K>
 std::optional<typename K::Time> Kinetic_segment_bsp<K>::next_event_time() {
-  std::optional<Time> first;
-  for (const auto& [key, time] : failing_)
-    if (!first || k_.compare(time, *first) < 0) first = time;
-  return first;
+  while (!queue_.empty() && stale(queue_.front())) pop();
+  if (queue_.empty()) return std::nullopt;
+  return queue_.front().time;
 }
 
 template <class K>
 typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   const Time t = *next_event_time();
   Batch b{t, {}, {}, false, 0, 0, 0};
-  for (const auto& [key, time] : failing_) {
-    if (k_.compare(time, t) == 0) {
+  std::vector<std::int32_t> nodes;
+  while (!queue_.empty() && (stale(queue_.front()) || k_.compare(queue_.front().time, t) == 0)) {
+    if (!stale(queue_.front())) {
+      const auto& key = queue_.front().key;
       b.failing.push_back(key);
       ++b.events[static_cast<std::size_t>(event_of(key, scene_.rank))];
+      const auto& at = certs_.at(key).nodes;
+      nodes.insert(nodes.end(), at.begin(), at.end());
     }
+    pop();
   }
+  std::sort(b.failing.begin(), b.failing.end());
+  b.failing.erase(std::unique(b.failing.begin(), b.failing.end()), b.failing.end());
   if (validate_) {
     const Segment_predicates<K> oracle(k_, scene_);
     const Time mid = kinetic::between(k_, now_, t);
     ++validations_;
     if (build_cylindrical_bsp(oracle, mid).text() != tree_.text())
-      failures_.push_back("the tree in force before t = " + k_.to_string(t) +
-                          " differs from a fresh build at t = " + k_.to_string(mid));
+      failures_.push_back("the tree in force before t = " + k_.to_string(t) + " differs from a fresh build at t = " +
+                          k_.to_string(mid));
   }
-  const std::string before = tree_.text();
   const auto start = std::chrono::steady_clock::now();
   now_ = t;
-  rebuild();
+  // The failing certificates go first: those decided again get a new failure time.
+  for (const auto& key : b.failing) certs_.erase(key);
+  const bool whole = update_ == Segment_update::rebuild ||
+                     std::find(nodes.begin(), nodes.end(), -1) != nodes.end();
+  if (whole) {
+    const std::string before = tree_.text();
+    rebuild();
+    b.changed = tree_.text() != before;
+    b.nodes_rebuilt = tree_.counts().nodes;
+  } else {
+    // The topmost of the nodes: a node below another is replayed with it.
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::vector<std::size_t> top;
+    for (const std::int32_t n : nodes) {
+      bool below = false;
+      for (std::int32_t a = tree_.nodes[static_cast<std::size_t>(n)].parent; a >= 0 && !below;
+           a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+        below = std::binary_search(nodes.begin(), nodes.end(), a);
+      if (!below) top.push_back(static_cast<std::size_t>(n));
+    }
+    for (const std::size_t v : top) b.changed = replay(v, b.nodes_rebuilt) || b.changed;
+  }
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  b.changed = tree_.text() != before;
-  b.nodes_rebuilt = tree_.counts().nodes;
-  b.certificates = certificates_.size();
+  b.certificates = certs_.size();
   return b;
+}
+
+template <class K>
+std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> Kinetic_segment_bsp<K>::certificate_list()
+    const {
+  // Nodes renumbered as tree() numbers them: in pre-order.
+  const std::vector<std::size_t> order = tree_.preorder();
+  std::vector<std::int32_t> id(tree_.nodes.size(), -1);
+  for (std::size_t i = 0; i < order.size(); ++i) id[order[i]] = static_cast<std::int32_t>(i);
+  std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> list;
+  for (const auto& [key, c] : certs_) {
+    std::vector<std::int32_t> nodes;
+    for (const std::int32_t n : c.nodes) nodes.push_back(n < 0 ? -1 : id[static_cast<std::size_t>(n)]);
+    std::sort(nodes.begin(), nodes.end());
+    list.emplace_back(key, std::move(nodes));
+  }
+  return list;
 }
 
 #define KVD_INSTANTIATE_KINETIC_SEGMENT_BSP(K) template class Kinetic_segment_bsp<K>;

@@ -137,7 +137,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
         rule = std::max(rule, Segment_rule::after);
       }
       sign *= s;
-      if (recorded_ && v[f].degree() > 0) deciding.push_back(v[f]);
+      if (recorder_ && v[f].degree() > 0) deciding.push_back(v[f]);
       continue;
     }
     if (!expanded) expanded = factors(View<Poly<P>>(perturbed_, nullptr));
@@ -146,7 +146,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
       if (vanishes(c)) continue;
       s = k_->sign_at(c, t);
       if (s == 0) s = k_->sign_after(c, t);
-      if (recorded_ && c.degree() > 0) deciding.push_back(c);
+      if (recorder_ && c.degree() > 0) deciding.push_back(c);
       break;
     }
     if (s == 0) throw std::logic_error("segment predicate: every ε-coefficient vanishes (see proofs/segment-perturbation.md)");
@@ -154,7 +154,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
     sign *= s;
   }
   ++(rule == Segment_rule::value ? counts_.value : rule == Segment_rule::after ? counts_.after : counts_.perturbation);
-  if (recorded_) (*recorded_)[key] = std::move(deciding);
+  if (recorder_) recorder_(key, std::move(deciding), node_);
   return {sign, rule};
 }
 

@@ -89,9 +89,13 @@ const char* const simulate_help =
     "For a kvd-segments/1 scene: the kinetic cylindrical BSP (seed 003, section\n"
     "3.1). Its certificates are the signs the construction evaluated; each\n"
     "failure is a vertex, edge, intersection or flip event; the tree just after\n"
-    "a batch is built again. Takes --events, --until, --validate every|none,\n"
-    "--kernel, --epsilon, --no-filter, --list, --json (failures_by_event,\n"
-    "changed_batches_by_event, batches, validations, update_ms, batch_list).\n"
+    "a batch is made by replaying the construction in the subtree of each\n"
+    "topmost node where a failing certificate was decided (--update local, the\n"
+    "default; a flip builds the tree again) or by building the whole tree again\n"
+    "(--update rebuild). Takes --events, --until, --validate every|none,\n"
+    "--update, --kernel, --epsilon, --no-filter, --list, --json\n"
+    "(failures_by_event, changed_batches_by_event, batches, validations,\n"
+    "update_ms, nodes_rebuilt, batch_list).\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation or a floating-point run\n"
     "stuck at one instant, 2 on bad input.\n";
@@ -327,7 +331,7 @@ int simulate(Args& args) {
       std::cout << simulate_help;
       return 0;
     }
-    for (const char* f : {"--trace", "--certificates", "--queue", "--update", "--upkeep", "--collisions"})
+    for (const char* f : {"--trace", "--certificates", "--queue", "--upkeep", "--collisions"})
       if (a == f) triangle_only.push_back(a);
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--kernel") kernel = args.value(a);
@@ -365,7 +369,9 @@ int simulate(Args& args) {
     if (o.validate == kinetic::Validation::end)
       throw Usage_error("kvd simulate: --validate end: a segment scene takes every or none");
     return segment_simulate(sa, text,
-                            {o.max_events, o.until, o.validate == kinetic::Validation::every, kernel, epsilon, filter, list});
+                            {o.max_events, o.until, o.validate == kinetic::Validation::every, kernel, epsilon, filter, list,
+                             update == kinetic::Update::rebuild ? segments::Segment_update::rebuild
+                                                                : segments::Segment_update::local});
   }
   const scene::Scene s = sa.read_scene("simulate", text);
   if (o.until) require_in_span("simulate", "--until", *o.until, s);

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli.hpp"
-#include "kvd/segments/segment_scene.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
 
 namespace kvd::cli {
 
@@ -24,6 +24,7 @@ struct Segment_run_options {
   std::optional<mpq_class> epsilon;
   bool filter = true;
   bool list = false;
+  segments::Segment_update update = segments::Segment_update::local;
 };
 
 int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o);

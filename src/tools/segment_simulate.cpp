@@ -31,7 +31,7 @@ double median(std::vector<double> v) {
 template <class K>
 int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
   using Kinetic = segments::Kinetic_segment_bsp<K>;
-  Kinetic kin(k, s, o.validate);
+  Kinetic kin(k, s, o.validate, o.update);
   const bool bounded = o.until.has_value();
   const typename K::Time until = bounded ? k.time(from_rational<typename K::FT>(*o.until)) : kin.now();
   const auto progress = progress_every_few_seconds("kvd simulate");
@@ -53,8 +53,9 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
   }
   std::array<std::size_t, 4> events{}, changed_by{};
   std::size_t changed = 0, simultaneous = 0;
-  std::vector<double> ms;
+  std::vector<double> ms, rebuilt;
   for (const auto& b : batches) {
+    rebuilt.push_back(static_cast<double>(b.nodes_rebuilt));
     for (std::size_t e = 0; e < 4; ++e) {
       events[e] += b.events[e];
       changed_by[e] += b.changed && b.events[e] > 0;
@@ -92,7 +93,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", kin.certificates()},
               {"update_ms", {{"mean", decimal(ms_text(mean))}, {"median", decimal(ms_text(median(ms)))},
                              {"max", decimal(ms_text(max))}}},
-              {"update", "rebuild"}, {"filter", filter_json(k)}};
+              {"update", o.update == segments::Segment_update::local ? "local" : "rebuild"},
+              {"nodes_rebuilt_median", median(rebuilt)}, {"filter", filter_json(k)}};
     if (o.list) j["batch_list"] = list;
     std::cout << json_line(j) << "\n";
   } else {
@@ -113,7 +115,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               << "\nvalidations:   " << kin.validations() << " (" << kin.validation_failures().size() << " failed)"
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << kin.certificates()
               << " certificates\nupdate (ms):   mean " << ms_text(mean) << ", median " << ms_text(median(ms))
-              << ", max " << ms_text(max) << " (the tree built again at each batch)\n";
+              << ", max " << ms_text(max) << "\nnodes made:    median " << median(rebuilt) << " a batch ("
+              << (o.update == segments::Segment_update::local ? "local" : "rebuild") << ")\n";
   }
   for (const auto& f : kin.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";
   return failed ? 1 : 0;

@@ -41,6 +41,7 @@ struct Cell {
 
 struct Bsp_node {
   Cut_kind kind = Cut_kind::leaf;
+  std::int32_t parent = -1;
   Site_point point;             // vertex and intersection cuts
   std::uint32_t segment = 0;    // edge cuts
   std::int32_t child[2] = {-1, -1};  // point cut: left, right; edge cut: below, above
@@ -53,18 +54,24 @@ struct Bsp_counts {
   std::size_t height = 0;  // nodes on the longest root-to-leaf path
 };
 
+// The tree. A kinetic run edits it in place, so slots of `nodes` may be
+// unused: everything here walks from the root.
 class Cylindrical_bsp {
 public:
   std::vector<Bsp_node> nodes;  // nodes[0] is the root
 
   Bsp_counts counts() const;
-  // The tree as nested parentheses, pre-order, children left/below first:
-  // "(V s3.0 L R)" a vertex cut through endpoint 0 of segment 3,
-  // "(I s1xs4 L R)" an intersection cut, "(E s2 B A)" an edge cut, and "."
-  // a leaf. Golden tests compare this text.
-  std::string text() const;
+  // The subtree of `root` as nested parentheses, pre-order, children
+  // left/below first: "(V s3.0 L R)" a vertex cut through endpoint 0 of
+  // segment 3, "(I s1xs4 L R)" an intersection cut, "(E s2 B A)" an edge
+  // cut, and "." a leaf. Golden tests compare this text.
+  std::string text(std::size_t root = 0) const;
+  // The nodes of the subtree of `root`, pre-order.
+  std::vector<std::size_t> preorder(std::size_t root = 0) const;
   // The nodes of the edge cuts of segment s (its fragments).
   std::vector<std::size_t> fragments(std::size_t s) const;
+  // The same tree with its nodes numbered in pre-order, no unused slot.
+  Cylindrical_bsp compacted() const;
 };
 
 template <class K>

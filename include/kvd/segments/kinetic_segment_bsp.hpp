@@ -2,33 +2,38 @@
 // section 3.1), as a stepping object over any kernel.
 //
 // Certificates: every sign the construction of the tree in force evaluated,
-// with the polynomials that decided it (Segment_predicates::record); the
-// tree cannot change before one of them changes sign, since the construction
-// branches on nothing else. A batch is every certificate failing at the
-// earliest failure time: exactly equal times in the exact kernel (decided by
-// the kernel's compare), the thesis's epsilon-minimum in the floating-point
-// ones. Each failure is classified as the paper's vertex, edge, intersection
-// or flip event (event_of).
+// with the polynomials that decided it and the nodes where it was decided
+// (Segment_predicates::record); the tree cannot change before one of them
+// changes sign, since the construction branches on nothing else. A batch is
+// every certificate failing at the earliest failure time: exactly equal
+// times in the exact kernel (decided by the kernel's compare), the thesis's
+// epsilon-minimum in the floating-point ones. Each failure is classified as
+// the paper's vertex, edge, intersection or flip event (event_of).
 //
-// This version makes the tree just after a batch by building it again at the
-// batch's time, and its certificates with it; the paper's local updates
-// (LeftShave and the splits of sections 3.1.1-3.1.4) are not implemented yet.
+// The local update replays, in the subtree of each topmost node where a
+// failing certificate was decided, the insertion steps that reached it
+// (kvd/detail/segments/bsp_builder.hpp; proofs/segment-local-update.md): the
+// rest of the tree, and its certificates, stay. A flip (the x order of a
+// segment's endpoints, decided at no node) builds the tree again. This is not
+// yet the paper's constant-size surgery (LeftShave and the splits of
+// sections 3.1.1-3.1.4): its cost is the size of the replayed subtrees.
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "kvd/detail/kinetic/root_cache.hpp"
+#include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 
 namespace kvd::segments {
 
-// How the tree just after a batch is made: by replaying, in the subtree of
-// each node where a failing certificate was decided, the insertions that
-// reached it (local), or by building the whole tree again (rebuild, the
-// reference).
+// How the tree just after a batch is made: by the local replay (local), or
+// by building the whole tree again (rebuild, the reference).
 enum class Segment_update { local, rebuild };
 
 template <class K>
@@ -48,13 +53,19 @@ public:
 
   // The scene is copied. With `validate`, the tree in force is compared,
   // before each batch, with a fresh build at an instant strictly between the
-  // last batch and this one (a rational in the exact kernel).
-  Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate, Segment_update update = Segment_update::local);
+  // last batch and this one (a rational in the exact kernel). The run starts
+  // at the scene's start, or just after `from`.
+  Kinetic_segment_bsp(const K& k, Segment_scene scene, bool validate, Segment_update update = Segment_update::local,
+                      const std::optional<Time>& from = std::nullopt);
 
   const Time& now() const { return now_; }
   const Segment_scene& scene() const { return scene_; }
-  const Cylindrical_bsp& tree() const { return tree_; }
-  std::size_t certificates() const { return certificates_.size(); }
+  // The tree in force, numbered afresh (a copy: the run edits its own).
+  Cylindrical_bsp tree() const { return tree_.compacted(); }
+  std::size_t certificates() const { return certs_.size(); }
+  // The certificates in force, each with the nodes (of tree()) where it was
+  // decided (-1: at no node), in key order.
+  std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> certificate_list() const;
   // The earliest failure of a certificate in force after now, within the
   // scene's span; none when nothing fails there.
   std::optional<Time> next_event_time();
@@ -66,18 +77,48 @@ public:
   std::size_t validations() const { return validations_; }
 
 private:
-  // The tree and its certificates at now, and each certificate's failure.
+  using P = typename K::Poly;
+  struct Certificate {
+    std::vector<P> polys;
+    std::vector<std::int32_t> nodes;  // where it was decided; -1: at no node
+    std::uint64_t version = 0;        // queue entries of another version are stale
+  };
+  struct Entry {
+    Time time;
+    Segment_certificate_key key;
+    std::uint64_t version;
+  };
+
+  void record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node);
   void rebuild();
+  // Replays the subtree of v; whether its text changed.
+  bool replay(std::size_t v, std::size_t& added);
+  void forget(std::size_t node);
+  // The crossings with an intersection cut in the subtree of v.
+  std::vector<Site_point> crossings_below(std::size_t v) const;
+  // Removes the certificate's decision at `node`, and the certificate with its last.
+  void drop(const Segment_certificate_key& key, std::int32_t node);
+  void push(const Entry& e);
+  void pop();
+  bool stale(const Entry& e) const;
 
   K k_;
   Segment_scene scene_;
   bool validate_;
   Segment_update update_;
   Time now_;
+  bool bounded_;
+  Time end_;
   Segment_predicates<K> pred_;
   Cylindrical_bsp tree_;
-  typename Segment_predicates<K>::Recorded certificates_;
-  std::vector<std::pair<Segment_certificate_key, Time>> failing_;  // the certificates that fail, and when
+  Build_log log_;
+  std::map<Segment_certificate_key, Certificate> certs_;
+  std::vector<std::vector<Segment_certificate_key>> node_keys_;  // per node slot
+  // Where the certificates naming a crossing were decided: when a replay
+  // finds a crossing no longer, its certificates above the replayed subtree go.
+  std::map<Site_point, std::vector<std::pair<Segment_certificate_key, std::int32_t>>> by_crossing_;
+  std::vector<Entry> queue_;                                     // a min-heap on time
+  std::uint64_t versions_ = 0;
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;

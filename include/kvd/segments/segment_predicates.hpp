@@ -23,7 +23,7 @@
 #include <array>
 #include <compare>
 #include <cstdint>
-#include <map>
+#include <functional>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -125,13 +125,15 @@ public:
   // How many signs each rule decided.
   const Segment_rule_counts& counts() const { return counts_; }
 
-  // While set, every sign decided by arithmetic is recorded with the
+  // While set, every sign decided by arithmetic is reported with the
   // polynomials in t that decided it (each factor's value or its first
-  // ε-coefficient that does not vanish, constants left out): the sign stays
-  // until one of them changes sign. A construction records its complete
-  // certificate set this way, since it branches on nothing else.
-  using Recorded = std::map<Segment_certificate_key, std::vector<P>>;
-  void record(Recorded* sink) const { recorded_ = sink; }
+  // ε-coefficient that does not vanish, constants left out: the sign stays
+  // until one of them changes sign) and the node `at_node` last named (-1:
+  // none). A construction reports its complete certificate set this way,
+  // since it branches on nothing else.
+  using Recorder = std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node)>;
+  void record(Recorder r) const { recorder_ = std::move(r); }
+  void at_node(std::int32_t n) const { node_ = n; }
 
 private:
   // The single entry point: the sign of the product of the factors that
@@ -146,7 +148,8 @@ private:
   std::vector<H<Poly<P>>> perturbed_;     // endpoint + ε g_e
   mutable Geometry_cache<P> cache_;
   mutable Segment_rule_counts counts_;
-  mutable Recorded* recorded_ = nullptr;
+  mutable Recorder recorder_;
+  mutable std::int32_t node_ = -1;
 };
 
 }  // namespace kvd::segments
