@@ -70,6 +70,47 @@ TEMPLATE_TEST_CASE("a segment over an endpoint: an edge event, then an intersect
   CHECK(kin.tree().text() == "(V s0.0 . (V s0.1 (E s0 (V s1.0 . (E s1 . .)) .) (V s1.1 (E s1 . .) .)))");
 }
 
+Segment_motion endpoints_motion(const QPoly& x0, const QPoly& y0, const QPoly& x1, const QPoly& y1) {
+  return moving(x0, y0, x1, y1).motion;
+}
+
+// Flight-plan changes (Lemma 3.1): the sinker of the scene above turned
+// upwards, before its edge event (the events go away) and exactly at it (the
+// tree goes back to the one before).
+TEST_CASE("a flight-plan change remakes the segment's certificates", "[segments][kinetic]") {
+  const auto s = scene_of({fixed(0, 0, 4, 0), moving(linear(2, 0), linear(2, -1), linear(6, 0), linear(0, -1))},
+                          {0, 1}, 0, 3);
+  const Exact_kernel k;
+  const Segment_motion up = endpoints_motion(linear(2, 0), linear(1, 1), linear(6, 0), linear(-1, 1));
+  {
+    Kinetic_segment_bsp<Exact_kernel> kin(k, s, true);
+    CHECK(kin.advance_to(Exact_time(mpq_class(1, 2))).empty());
+    const std::size_t before = kin.certificates();
+    CHECK_FALSE(kin.set_motion(1, up));
+    CHECK(kin.certificates() == before);
+    Segment_scene changed = s;
+    changed.segments[1].motion = up;
+    const Kinetic_segment_bsp<Exact_kernel> fresh(k, changed, false, Segment_update::local, Exact_time(mpq_class(1, 2)));
+    CHECK(kin.certificate_list() == fresh.certificate_list());
+    CHECK(run(kin, 10).empty());
+    CHECK(kin.validation_failures().empty());
+  }
+  {
+    Kinetic_segment_bsp<Exact_kernel> kin(k, s, true);
+    const auto batches = kin.advance_to(Exact_time(mpq_class(1)));
+    REQUIRE(batches.size() == 1);
+    const Segment_motion back = endpoints_motion(linear(2, 0), linear(0, 1), linear(6, 0), linear(-2, 1));
+    CHECK(kin.set_motion(1, back));
+    CHECK(kin.tree().text() == "(V s0.0 . (V s0.1 (E s0 . (V s1.0 . (E s1 . .))) (V s1.1 (E s1 . .) .)))");
+    Segment_scene changed = s;
+    changed.segments[1].motion = back;
+    const Kinetic_segment_bsp<Exact_kernel> fresh(k, changed, false, Segment_update::local, Exact_time(mpq_class(1)));
+    CHECK(kin.certificate_list() == fresh.certificate_list());
+    // A motion that jumps is refused.
+    CHECK_THROWS_AS(kin.set_motion(1, up), std::invalid_argument);
+  }
+}
+
 TEST_CASE("exact event times are exact", "[segments][kinetic]") {
   const auto s = scene_of({fixed(0, 0, 4, 0), moving(linear(2, 0), linear(2, -1), linear(6, 0), linear(0, -1))},
                           {0, 1}, 0, 3);
@@ -131,6 +172,21 @@ TEST_CASE("random moving segment scenes: every batch equals a fresh build", "[se
     if (collapses) continue;
     Kinetic_segment_bsp<Exact_kernel> kin(Exact_kernel(), s, true);
     INFO("seed " << seed);
+    // Half way, a flight-plan change: one segment takes a new velocity.
+    const mpq_class half(1, 2);
+    batches += kin.advance_to(Exact_time(half)).size();
+    const std::size_t turned = seed % s.segments.size();
+    const QPoly dt({-half, mpq_class(1)});  // t - 1/2
+    const auto p = s.endpoint_at(2 * turned, half), q = s.endpoint_at(2 * turned + 1, half);
+    const Segment_motion turn = endpoints_motion(QPoly(p[0] / p[2]) + dt, QPoly(p[1] / p[2]) - dt * mpq_class(2),
+                                                 QPoly(q[0] / q[2]) + dt * mpq_class(3), QPoly(q[1] / q[2]));
+    kin.set_motion(turned, turn);
+    s.segments[turned].motion = turn;
+    {
+      const Kinetic_segment_bsp<Exact_kernel> fresh(Exact_kernel(), s, false, Segment_update::local, Exact_time(half));
+      CHECK(kin.certificate_list() == fresh.certificate_list());
+      CHECK(kin.tree().text() == fresh.tree().text());
+    }
     for (std::size_t n = 0; n < 400 && kin.next_event_time(); ++n) {
       const auto b = kin.advance();
       ++batches;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iterator>
+#include <stdexcept>
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
@@ -22,26 +23,19 @@ Kinetic_segment_bsp<K>::Kinetic_segment_bsp(const K& k, Segment_scene scene, boo
       bounded_(scene_.end.has_value()),
       end_(bounded_ ? k_.time(from_rational<typename K::FT>(*scene_.end)) : now_),
       pred_(k_, scene_) {
-  pred_.record([this](const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node) {
-    record(key, std::move(polys), node);
-  });
+  pred_.record(recorder());
   rebuild();
 }
 
 template <class K>
-void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node) {
+void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node,
+                                    int sign) {
   auto [it, fresh] = certs_.try_emplace(key);
   Certificate& c = it->second;
   if (fresh) {
     c.polys = std::move(polys);
-    c.version = ++versions_;
-    std::optional<Time> first;
-    for (const auto& q : c.polys) {
-      const auto& r = roots_.next_root(k_, q, now_);
-      if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
-    }
-    // A failure after the span's end is no event.
-    if (first && !(bounded_ && k_.compare(*first, end_) > 0)) push({*first, key, c.version});
+    c.sign = sign;
+    schedule(key, c);
   }
   if (std::find(c.nodes.begin(), c.nodes.end(), node) != c.nodes.end()) return;
   c.nodes.push_back(node);
@@ -50,6 +44,37 @@ void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vec
   if (node < 0) return;
   if (node_keys_.size() <= static_cast<std::size_t>(node)) node_keys_.resize(static_cast<std::size_t>(node) + 1);
   node_keys_[static_cast<std::size_t>(node)].push_back(key);
+}
+
+template <class K>
+typename Segment_predicates<K>::Recorder Kinetic_segment_bsp<K>::recorder() {
+  return [this](const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node, int sign) {
+    record(key, std::move(polys), node, sign);
+  };
+}
+
+template <class K>
+std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::advance_to(const Time& t) {
+  std::vector<Batch> batches;
+  while (const auto next = next_event_time()) {
+    if (k_.compare(*next, t) > 0) break;
+    batches.push_back(advance());
+  }
+  // No certificate fails in (now, t]: their failure times stay.
+  if (k_.compare(now_, t) < 0) now_ = t;
+  return batches;
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certificate& c) {
+  c.version = ++versions_;
+  std::optional<Time> first;
+  for (const auto& q : c.polys) {
+    const auto& r = roots_.next_root(k_, q, now_);
+    if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
+  }
+  // A failure after the span's end is no event.
+  if (first && !(bounded_ && k_.compare(*first, end_) > 0)) push({*first, key, c.version});
 }
 
 template <class K>
@@ -180,30 +205,87 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   now_ = t;
   // The failing certificates go first: those decided again get a new failure time.
   for (const auto& key : b.failing) certs_.erase(key);
-  const bool whole = update_ == Segment_update::rebuild ||
-                     std::find(nodes.begin(), nodes.end(), -1) != nodes.end();
-  if (whole) {
-    const std::string before = tree_.text();
-    rebuild();
-    b.changed = tree_.text() != before;
-    b.nodes_rebuilt = tree_.counts().nodes;
-  } else {
-    // The topmost of the nodes: a node below another is replayed with it.
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    std::vector<std::size_t> top;
-    for (const std::int32_t n : nodes) {
-      bool below = false;
-      for (std::int32_t a = tree_.nodes[static_cast<std::size_t>(n)].parent; a >= 0 && !below;
-           a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-        below = std::binary_search(nodes.begin(), nodes.end(), a);
-      if (!below) top.push_back(static_cast<std::size_t>(n));
-    }
-    for (const std::size_t v : top) b.changed = replay(v, b.nodes_rebuilt) || b.changed;
-  }
+  b.changed = update(std::move(nodes), b.nodes_rebuilt);
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certs_.size();
   return b;
+}
+
+template <class K>
+bool Kinetic_segment_bsp<K>::update(std::vector<std::int32_t> nodes, std::size_t& made) {
+  if (update_ == Segment_update::rebuild || std::find(nodes.begin(), nodes.end(), -1) != nodes.end()) {
+    const std::string before = tree_.text();
+    rebuild();
+    made += tree_.counts().nodes;
+    return tree_.text() != before;
+  }
+  // The topmost of the nodes: a node below another is replayed with it.
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  bool changed = false;
+  for (const std::int32_t n : nodes) {
+    bool below = false;
+    for (std::int32_t a = tree_.nodes[static_cast<std::size_t>(n)].parent; a >= 0 && !below;
+         a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+      below = std::binary_search(nodes.begin(), nodes.end(), a);
+    if (!below) changed = replay(static_cast<std::size_t>(n), made) || changed;
+  }
+  return changed;
+}
+
+template <class K>
+bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motion& motion) {
+  if (segment >= scene_.segments.size()) throw std::invalid_argument("set_motion: no segment " + std::to_string(segment));
+  Segment_scene changed = scene_;
+  changed.segments[segment].motion = motion;
+  using FT = typename K::FT;
+  for (const std::size_t e : {2 * segment, 2 * segment + 1}) {
+    const auto a = scene_.endpoint(e), b = changed.endpoint(e);
+    const P w = poly_from_rational<FT>(b[2]);
+    if (k_.sign_at(w, now_) == 0) throw std::invalid_argument("set_motion: W is zero now");
+    if (const auto r = k_.next_root(w, now_); r && !(bounded_ && k_.compare(*r, end_) > 0))
+      throw std::invalid_argument("set_motion: W vanishes at t = " + k_.to_string(*r) + ", inside the span");
+    for (const std::size_t c : {0, 1})
+      if (k_.sign_at(poly_from_rational<FT>(a[c] * b[2] - b[c] * a[2]), now_) != 0)
+        throw std::invalid_argument("set_motion: the new motion moves endpoint " + std::to_string(e % 2) +
+                                    " away from where it is now");
+  }
+  scene_.segments[segment].motion = motion;
+  pred_.refresh(segment, now_);
+  // The certificates naming the segment, decided again: the same sign makes
+  // new polynomials and a new failure time; another sign is a change now.
+  const auto names = [&](const Segment_certificate_key& key) {
+    using Kind = Segment_certificate_key::Kind;
+    return key.p.on(segment) || (key.kind == Kind::x_order && key.q.on(segment)) ||
+           (key.kind != Kind::x_order && key.i == segment) || (key.kind == Kind::order_at && key.j == segment);
+  };
+  std::vector<Segment_certificate_key> named;
+  for (const auto& [key, c] : certs_)
+    if (names(key)) named.push_back(key);
+  std::vector<std::int32_t> nodes;
+  for (const auto& key : named) {
+    Certificate& c = certs_.at(key);
+    std::vector<P> polys;
+    int sign = 0;
+    pred_.record([&](const Segment_certificate_key&, std::vector<P>&& q, std::int32_t, int s) {
+      polys = std::move(q);
+      sign = s;
+    });
+    using Kind = Segment_certificate_key::Kind;
+    if (key.kind == Kind::x_order) pred_.compare_x(key.p, key.q, now_);
+    else if (key.kind == Kind::side) pred_.side(key.p, key.i, now_);
+    else pred_.order_at(key.p, key.i, key.j, now_);
+    if (sign != c.sign) {
+      nodes.insert(nodes.end(), c.nodes.begin(), c.nodes.end());
+      certs_.erase(key);
+      continue;
+    }
+    c.polys = std::move(polys);
+    schedule(key, c);
+  }
+  pred_.record(recorder());
+  std::size_t made = 0;
+  return !nodes.empty() && update(std::move(nodes), made);
 }
 
 template <class K>

@@ -82,20 +82,32 @@ long perturbation_lambda(std::size_t e, std::size_t n) {
 }
 
 template <class K>
-Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s) : k_(&k), s_(&s) {
-  using FT = typename K::FT;
-  for (std::size_t e = 0; e < s.endpoint_count(); ++e) {
-    const Motion_point3 m = s.endpoint(e);
-    const bool negate = sgn(m[2](s.start)) < 0;
-    H<P> p;
-    for (std::size_t i = 0; i < 3; ++i) p[i] = poly_from_rational<FT>(negate ? QPoly(-m[i]) : m[i]);
-    const mpq_class g(perturbation_lambda(e, s.segments.size()));
-    const P gx(from_rational<FT>(g)), gy(from_rational<FT>(g * g));
-    perturbed_.push_back({Poly<P>(std::vector<P>{p[0], p[2] * gx}), Poly<P>(std::vector<P>{p[1], p[2] * gy}),
-                          Poly<P>(std::vector<P>{p[2]})});
-    endpoints_.push_back(std::move(p));
-  }
+Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s)
+    : k_(&k), s_(&s), endpoints_(s.endpoint_count()), perturbed_(s.endpoint_count()) {
+  for (std::size_t e = 0; e < s.endpoint_count(); ++e) load(e, sgn(s.endpoint(e)[2](s.start)));
   cache_.lines.resize(s.segments.size());
+}
+
+// Endpoint e from the scene, negated when its W has the sign `w` < 0.
+template <class K>
+void Segment_predicates<K>::load(std::size_t e, int w) {
+  using FT = typename K::FT;
+  const Motion_point3 m = s_->endpoint(e);
+  H<P> p;
+  for (std::size_t i = 0; i < 3; ++i) p[i] = poly_from_rational<FT>(w < 0 ? QPoly(-m[i]) : m[i]);
+  const mpq_class g(perturbation_lambda(e, s_->segments.size()));
+  const P gx(from_rational<FT>(g)), gy(from_rational<FT>(g * g));
+  perturbed_[e] = {Poly<P>(std::vector<P>{p[0], p[2] * gx}), Poly<P>(std::vector<P>{p[1], p[2] * gy}),
+                   Poly<P>(std::vector<P>{p[2]})};
+  endpoints_[e] = std::move(p);
+}
+
+template <class K>
+void Segment_predicates<K>::refresh(std::size_t segment, const Time& at) {
+  for (const std::size_t e : {2 * segment, 2 * segment + 1})
+    load(e, k_->sign_at(poly_from_rational<typename K::FT>(s_->endpoint(e)[2]), at));
+  cache_.lines[segment].reset();
+  cache_.crossings.clear();
 }
 
 template <class K>
@@ -154,7 +166,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
     sign *= s;
   }
   ++(rule == Segment_rule::value ? counts_.value : rule == Segment_rule::after ? counts_.after : counts_.perturbation);
-  if (recorder_) recorder_(key, std::move(deciding), node_);
+  if (recorder_) recorder_(key, std::move(deciding), node_, sign);
   return {sign, rule};
 }
 

@@ -71,6 +71,15 @@ public:
   std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
   Batch advance();
+  // Processes every batch at a time <= t, then moves now to t (if later).
+  std::vector<Batch> advance_to(const Time& t);
+  // A flight-plan change: segment `segment` follows `motion` from now on.
+  // The motion must put the segment where it is now (std::invalid_argument
+  // otherwise, and when W vanishes at now or later in the span). Only the
+  // certificates naming the segment are made again (Lemma 3.1); where the
+  // new motion changes a sign just after now, the tree is updated as for a
+  // batch. Returns whether the tree changed.
+  bool set_motion(std::size_t segment, const Segment_motion& motion);
   // The validations that found a tree in force different from a fresh
   // build, described (empty when every one agreed), and how many ran.
   const std::vector<std::string>& validation_failures() const { return failures_; }
@@ -81,6 +90,7 @@ private:
   struct Certificate {
     std::vector<P> polys;
     std::vector<std::int32_t> nodes;  // where it was decided; -1: at no node
+    int sign = 0;                     // as decided
     std::uint64_t version = 0;        // queue entries of another version are stale
   };
   struct Entry {
@@ -89,7 +99,13 @@ private:
     std::uint64_t version;
   };
 
-  void record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node);
+  void record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node, int sign);
+  typename Segment_predicates<K>::Recorder recorder();
+  // Queues the certificate's next failure after now, within the span.
+  void schedule(const Segment_certificate_key& key, Certificate& c);
+  // The tree just after now, given the nodes where the signs that changed
+  // were decided; whether it changed, and the nodes made.
+  bool update(std::vector<std::int32_t> nodes, std::size_t& made);
   void rebuild();
   // Replays the subtree of v; whether its text changed.
   bool replay(std::size_t v, std::size_t& added);

@@ -131,9 +131,13 @@ public:
   // until one of them changes sign) and the node `at_node` last named (-1:
   // none). A construction reports its complete certificate set this way,
   // since it branches on nothing else.
-  using Recorder = std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node)>;
+  using Recorder =
+      std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node, int sign)>;
   void record(Recorder r) const { recorder_ = std::move(r); }
   void at_node(std::int32_t n) const { node_ = n; }
+  // Reads segment s's endpoints from the scene again (its motion changed),
+  // with the sign of their W at `at`.
+  void refresh(std::size_t segment, const Time& at);
 
 private:
   // The single entry point: the sign of the product of the factors that
@@ -141,6 +145,7 @@ private:
   template <class F>
   Segment_sign decide(const Segment_certificate_key& key, const F& factors, const Time& t) const;
   bool vanishes(const P& f) const;
+  void load(std::size_t e, int w);
 
   const K* k_;
   const Segment_scene* s_;
