@@ -66,6 +66,13 @@ public:
   // The certificates in force, each with the nodes (of tree()) where it was
   // decided (-1: at no node), in key order.
   std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> certificate_list() const;
+  // The polynomials in t of a certificate in force (each factor's value, or
+  // its first ε-coefficient that does not vanish; constants left out) and the
+  // sign it had when decided: the product of the factors' signs.
+  const std::vector<typename K::Poly>& polynomials(const Segment_certificate_key& key) const {
+    return certs_.at(key).polys;
+  }
+  int sign(const Segment_certificate_key& key) const { return certs_.at(key).sign; }
   // The earliest failure of a certificate in force after now, within the
   // scene's span; none when nothing fails there.
   std::optional<Time> next_event_time();
