@@ -576,3 +576,73 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
   CHECK(late.status == 2);
   CHECK(late.out.find("--time 9 is outside the scene's time span [0, 7/2]") != std::string::npos);
 }
+
+namespace {
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("kvd render draws a segment scene's BSP as SVG, one element per cut", "[cli][render][segments]") {
+  const std::string dir = std::string(KVD_SOURCE_DIR) + "/data/segments/";
+  const std::string out = std::string(KVD_BINARY_DIR) + "/render-segments.svg";
+  for (const auto& [scene, time] : {std::pair{"two-crossing", "0"}, std::pair{"over-endpoint", "13/4"}}) {
+    INFO(scene);
+    std::remove(out.c_str());
+    const std::string args = dir + scene + ".json --time " + time;
+    const nlohmann::json counts = nlohmann::json::parse(run("build " + args + " --json").out);
+    REQUIRE(run("render " + args + " -o " + out).status == 0);
+    const std::string svg = file_text(out);
+    CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
+    CHECK(occurrences(svg, "class=\"vertex-cut\"") == counts["vertex_cuts"].get<std::size_t>());
+    CHECK(occurrences(svg, "class=\"intersection-cut\"") == counts["intersection_cuts"].get<std::size_t>());
+    CHECK(occurrences(svg, "class=\"edge-cut\"") == counts["edge_cuts"].get<std::size_t>());
+    CHECK(occurrences(svg, "class=\"cell ") == counts["leaves"].get<std::size_t>());
+    CHECK(run("render " + args).out == svg);  // the same bytes on stdout
+  }
+  CHECK(run("render --help").out.find("kvd-segments/1") != std::string::npos);
+}
+
+TEST_CASE("kvd render and kvd animate refuse bad input for segment scenes and write nothing",
+          "[cli][render][animate][segments]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/segments/two-crossing.json";
+  const std::string out = std::string(KVD_BINARY_DIR) + "/refused-segments.svg";
+  std::remove(out.c_str());
+  const Run late = run("render " + scene + " --time 11 -o " + out, "2>&1");  // the span is [0, 10]
+  CHECK(late.status == 2);
+  CHECK(late.out.find("--time 11 is outside the scene's time span [0, 10]") != std::string::npos);
+  CHECK(run("render " + scene + " --time -1/2 -o " + out).status == 2);
+  const Run view = run("render " + scene + " --view 1,2,3 -o " + out, "2>&1");
+  CHECK(view.status == 2);
+  CHECK(view.out.find("--view: only for triangle scenes") != std::string::npos);
+  CHECK(run("render " + scene + " --cells -o " + out).status == 2);
+  CHECK(run("render " + scene + " -o " + std::string(KVD_BINARY_DIR) + "/refused-segments.png").status == 2);
+  CHECK(run("animate " + scene + " --view 1,2,3 -o " + out).status == 2);
+  CHECK(run("animate " + scene + " --until 11 -o " + out).status == 2);
+  CHECK(run("animate " + scene + " -o " + std::string(KVD_BINARY_DIR) + "/refused-segments.gif").status == 2);
+  CHECK(!std::ifstream(out).good());
+}
+
+TEST_CASE("kvd animate films a segment scene's run, a held frame after each batch", "[cli][animate][segments]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/segments/over-endpoint.json";
+  const std::string out = std::string(KVD_BINARY_DIR) + "/over-endpoint-film.svg";
+  std::remove(out.c_str());
+  // One batch (the edge event at t = 3): four sampled frames and one held.
+  const Run r = run("animate " + scene + " --frames 4 -o " + out);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("1 batches, 1 events, 5 pictures in 9 frames") != std::string::npos);
+  const std::string film = file_text(out);
+  CHECK(occurrences(film, "<g class=\"frame\"") == 5);
+  CHECK(occurrences(film, "data-batch=\"0\"") == 1);
+  CHECK(film.find("after batch 1 of 1 (t = 3): edge event") != std::string::npos);
+  CHECK(occurrences(film, "<style>") == 1);
+}

@@ -1,10 +1,15 @@
-// kvd animate SCENE --view X,Y,Z --out FILE.svg|.mp4|.gif: a run as a film.
+// kvd animate SCENE --view X,Y,Z --out FILE.svg|.mp4|.gif: a run as a film;
+// of the cylindrical BSP for a segment scene.
 #include <algorithm>
 #include <array>
 #include <iostream>
 
 #include "animation.hpp"
 #include "cli.hpp"
+#include "kvd/segments/segment_io.hpp"
+#include "kvd/segments/segment_svg.hpp"
+#include "segment_animation.hpp"
+#include "segment_commands.hpp"
 
 namespace kvd::cli {
 
@@ -31,12 +36,22 @@ const char* const animate_help =
     "  --cells      outline fragment sides by the cut that made them: P red,\n"
     "               E green, the triangle's own edges blue\n"
     "  --size PX    picture size in pixels (default 640)\n"
+    "  -o FILE      the same as --out FILE\n"
     "\n"
     "FILE.svg is one SVG showing the frames in turn (SMIL, looping; a browser\n"
     "plays it). FILE.mp4 (H.264) and FILE.gif are encoded by ffmpeg (Debian's\n"
     "ffmpeg) from PNG frames drawn with cairo. FILE is written completely or not\n"
     "at all. Exit status: 0 on success, 1 on a failed validation, 2 on bad input\n"
-    "(or no ffmpeg for a video).\n";
+    "(or no ffmpeg for a video).\n"
+    "\n"
+    "For a kvd-segments/1 scene (told apart by its \"format\"): runs the exact\n"
+    "kinetic cylindrical BSP (not validated) over the scene's span, or to\n"
+    "--until, and films it in the plane as kvd render draws it: frames sampled\n"
+    "evenly, and one held just after every batch, captioned with the batch's\n"
+    "event kinds (vertex event, edge event, intersection event, flip). Each\n"
+    "frame draws the tree built afresh at its rational instant, all in one\n"
+    "view box. FILE.svg only; --size is the width; --view, --cells and\n"
+    "--collisions are for triangle scenes.\n";
 
 // In front of the scene at its start, to the left and above: its centre
 // plus (-2, -3, 2) times the largest extent of its vertices (exact).
@@ -59,6 +74,32 @@ std::array<mpq_class, 3> default_view(const scene::Scene& s) {
   return eye;
 }
 
+void print_summary(std::size_t batches, std::size_t failures, std::size_t pictures, std::size_t shown, int fps,
+                   const std::string& out) {
+  std::cout << "kvd animate: " << batches << " batches, " << failures << " events, " << pictures << " pictures in "
+            << shown << " frames (" << static_cast<double>(shown) / fps << " s at " << fps << " fps); wrote " << out
+            << "\n";
+}
+
+// The film of a segment scene's cylindrical BSP, as SMIL SVG.
+int animate_segments(const Scene_args& sa, const std::string& text, const std::string& out, const kinetic::Options& o,
+                     const view::Animation_options& a) {
+  if (!ends_with(out, ".svg"))
+    throw Usage_error("kvd animate: a segment scene is filmed as SVG only: --out must name an .svg file");
+  const segments::Segment_scene s = sa.read_segments("animate", text);
+  if (o.until) require_in_span("animate", "--until", *o.until, s.start, s.end);
+  const view::Segment_film film =
+      view::segment_film(s, {o.until, o.max_events, a.sampled, a.hold, a.render.size},
+                         progress_every_few_seconds("kvd animate"),
+                         progress_every_few_seconds("kvd animate", "frames drawn"));
+  write_atomically("animate", out,
+                   view::smil_svg(film.frames, film.width, film.height, a.fps, segments::segment_svg_style()));
+  std::size_t shown = 0;
+  for (const auto& f : film.frames) shown += static_cast<std::size_t>(f.repeat);
+  print_summary(film.batches, film.failures, film.frames.size(), shown, a.fps, out);
+  return 0;
+}
+
 int bounded(Args& args, const std::string& flag, std::uint64_t lo, std::uint64_t hi) {
   const std::uint64_t n = args.unsigned_value(flag);
   if (n < lo || n > hi)
@@ -74,15 +115,17 @@ int animate(Args& args) {
   view::Animation_options a;
   a.render.size = 640;
   std::optional<std::string> out;
+  std::vector<std::string> triangle_only;
   while (!args.done()) {
     const std::string& arg = args.next();
     if (arg == "--help" || arg == "-h") {
       std::cout << animate_help;
       return 0;
     }
+    if (arg == "--view" || arg == "--cells" || arg == "--collisions") triangle_only.push_back(arg);
     if (arg == "--events") o.max_events = args.unsigned_value(arg);
     else if (arg == "--until") o.until = exact_option("animate", arg, args.value(arg));
-    else if (arg == "--out") out = args.value(arg);
+    else if (arg == "--out" || arg == "-o") out = args.value(arg);
     else if (arg == "--collisions") o.collisions = collisions_option("animate", args.value(arg));
     else if (arg == "--fps") a.fps = bounded(args, arg, 1, 120);
     else if (arg == "--frames") a.sampled = bounded(args, arg, 0, 100000);
@@ -92,12 +135,18 @@ int animate(Args& args) {
     else if (arg == "--json" || !sa.take(args, arg)) args.unknown(arg);
   }
   if (!out) throw Usage_error("kvd animate: missing --out FILE.svg|FILE.mp4|FILE.gif (see kvd animate --help)");
+  const std::string text = sa.read_text("animate");
+  if (segments::scene_format(text) == "kvd-segments/1") {
+    if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
+    refuse_triangle_flags("animate", triangle_only);
+    return animate_segments(sa, text, *out, o, a);
+  }
   const bool svg = ends_with(*out, ".svg");
   if (!svg && !ends_with(*out, ".mp4") && !ends_with(*out, ".gif"))
     throw Usage_error("kvd animate: --out must name an .svg, .mp4 or .gif file");
   if (!svg && !query::png_supported())
     throw Usage_error("kvd animate: this build has no PNG frames (cairo was not found when it was built); use .svg");
-  const scene::Scene s = sa.load_scene("animate");
+  const scene::Scene s = sa.read_scene("animate", text);
   a.view = sa.view ? *sa.view : default_view(s);
   if (o.until) require_in_span("animate", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd animate");
@@ -117,9 +166,7 @@ int animate(Args& args) {
   write_atomically("animate", *out, bytes);
   std::size_t shown = 0;
   for (const auto& f : frames) shown += static_cast<std::size_t>(f.repeat);
-  std::cout << "kvd animate: " << run.sim.batches.size() << " batches, " << run.sim.failures << " events, "
-            << frames.size() << " pictures in " << shown << " frames (" << static_cast<double>(shown) / a.fps
-            << " s at " << a.fps << " fps); wrote " << *out << "\n";
+  print_summary(run.sim.batches.size(), run.sim.failures, frames.size(), shown, a.fps, *out);
   return 0;
 }
 

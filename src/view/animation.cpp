@@ -17,13 +17,6 @@ namespace {
 
 using D2 = query::Camera::D2;
 
-// A rational in (a, b), within `within` of a where b allows.
-mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& within) {
-  while (!a.is_rational() && a.upper() - a.lower() > within / 2) a.refine();
-  const mpq_class t = (a.is_rational() ? a.rational() : a.upper()) + within / 2;
-  return Exact_kernel().compare(Exact_time(t), b) < 0 ? t : kinetic::rational_between(a, b);
-}
-
 struct Planned {
   mpq_class time;
   std::optional<std::size_t> batch;
@@ -125,6 +118,12 @@ int run_program(const std::vector<std::string>& argv) {
 
 }  // namespace
 
+mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& within) {
+  while (!a.is_rational() && a.upper() - a.lower() > within / 2) a.refine();
+  const mpq_class t = (a.is_rational() ? a.rational() : a.upper()) + within / 2;
+  return Exact_kernel().compare(Exact_time(t), b) < 0 ? t : kinetic::rational_between(a, b);
+}
+
 std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& o,
                                               const std::function<void(std::size_t, std::size_t)>& progress) {
   query::Camera camera({o.view[0].get_d(), o.view[1].get_d(), o.view[2].get_d()},
@@ -158,14 +157,14 @@ std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Ani
   return frames;
 }
 
-std::string animated_svg(const std::vector<Animation_frame>& frames, const Animation_options& o) {
+std::string smil_svg(const std::vector<Smil_frame>& frames, int width, int height, int fps,
+                     const std::string& head) {
   std::size_t total = 0;
   for (const auto& f : frames) total += static_cast<std::size_t>(f.repeat);
-  const double seconds = static_cast<double>(total) / o.fps;
+  const double seconds = static_cast<double>(total) / fps;
   std::ostringstream svg;
-  const int size = o.render.size;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\"" << size << "\" viewBox=\"0 0 "
-      << size << " " << size << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << " " << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n" << head;
   std::size_t at = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const double from = static_cast<double>(at) / static_cast<double>(total);
@@ -182,10 +181,16 @@ std::string animated_svg(const std::vector<Animation_frame>& frames, const Anima
     svg << "<g class=\"frame\" display=\"" << (i == 0 ? "inline" : "none") << "\"" << (frames[i].batch ? " data-batch=\"" + std::to_string(*frames[i].batch) + "\"" : "")
         << ">\n<animate attributeName=\"display\" " << timing << " dur=\"" << seconds
         << "s\" calcMode=\"discrete\" repeatCount=\"indefinite\"/>\n"
-        << query::svg_elements(frames[i].picture, o.render, frames[i].overlay) << "</g>\n";
+        << frames[i].elements << "</g>\n";
   }
   svg << "</svg>\n";
   return svg.str();
+}
+
+std::string animated_svg(const std::vector<Animation_frame>& frames, const Animation_options& o) {
+  std::vector<Smil_frame> smil;
+  for (const auto& f : frames) smil.push_back({query::svg_elements(f.picture, o.render, f.overlay), f.repeat, f.batch});
+  return smil_svg(smil, o.render.size, o.render.size, o.fps);
 }
 
 std::string encoded_video(const std::vector<Animation_frame>& frames, const Animation_options& o, Video kind) {

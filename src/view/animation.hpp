@@ -31,10 +31,28 @@ struct Animation_frame {
   int repeat = 1;  // frames it lasts
 };
 
+// A rational in (a, b), within `within` of a where b allows: the instant of
+// the frame held after a batch at a, before the next failure at b.
+mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& within);
+
 // The frames in time order, framed together so that the camera stays still.
 // Calls progress(done, of) after each frame.
 std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& options,
                                               const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+// One picture of a SMIL film: its SVG elements, the frames it lasts, and
+// the batch it is held after, if it is.
+struct Smil_frame {
+  std::string elements;
+  int repeat = 1;
+  std::optional<std::size_t> batch;
+};
+
+// One SVG document of width x height pixels showing the frames in turn at
+// fps, looping (SMIL), after `head` (elements the frames share, such as a
+// <style>). A viewer without SMIL shows the first frame.
+std::string smil_svg(const std::vector<Smil_frame>& frames, int width, int height, int fps,
+                     const std::string& head = "");
 
 // One SVG document showing the frames in turn, looping (SMIL).
 std::string animated_svg(const std::vector<Animation_frame>& frames, const Animation_options& options);
