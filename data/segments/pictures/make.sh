@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Makes the pictures of the cylindrical BSP of segments in this folder again,
-# byte for byte: data/segments/pictures/make.sh [KVD] (KVD: the kvd binary,
-# default build/kvd of this repository).
+# byte for byte: data/segments/pictures/make.sh [KVD [OUT]] (KVD: the kvd
+# binary, default build/kvd of this repository; OUT: the folder to write,
+# default this one; CTest writes elsewhere and compares).
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scenes=$here/..
-kvd=${1:-$here/../../../build/kvd}
+src=$(cd "$(dirname "$0")" && pwd)
+scenes=$src/..
+kvd=${1:-$src/../../../build/kvd}
+here=${2:-$src}
+mkdir -p "$here"
 
 "$kvd" render "$scenes/two-crossing.json" -o "$here/two-crossing.svg"
 "$kvd" render "$scenes/concurrent-three.json" --time 0 -o "$here/concurrent-three.svg"
