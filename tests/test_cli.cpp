@@ -646,3 +646,48 @@ TEST_CASE("kvd animate films a segment scene's run, a held frame after each batc
   CHECK(film.find("after batch 1 of 1 (t = 3): edge event") != std::string::npos);
   CHECK(occurrences(film, "<style>") == 1);
 }
+
+TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds, or writes nothing on bad input",
+          "[cli][bench]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/bench-aeg";
+  const std::string to = " --out " + out;
+  std::remove((out + "/aeg.md").c_str());
+  std::remove((out + "/aeg.csv").c_str());
+  CHECK(run("bench aeg --help").out.find("usage: kvd bench aeg") != std::string::npos);
+  CHECK(run("bench aeg --sizes 0" + to).status == 2);
+  CHECK(run("bench aeg --kinetic-sizes 20,x" + to).status == 2);
+  CHECK(run("bench aeg --repeats 0" + to).status == 2);
+  CHECK(run("bench aeg --events x" + to).status == 2);
+  CHECK(!std::ifstream(out + "/aeg.md").good());
+  const Run r = run("bench aeg --sizes 20,10 --quadratic-up-to 10 --kinetic-sizes 10 --events 10 --rotating 10 --repeats 1" +
+                    to);
+  REQUIRE(r.status == 0);
+  std::ifstream f(out + "/aeg.md");
+  const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // The sizes in increasing order, long segments only up to 10, and the
+  // local update agreeing with the rebuild.
+  CHECK(md.find("| linear | 10 | ") < md.find("| linear | 20 | "));
+  CHECK(md.find("| quadratic | 10 | ") != std::string::npos);
+  CHECK(md.find("| quadratic | 20 | ") == std::string::npos);
+  CHECK(md.find("**no**") == std::string::npos);
+  // One row per configuration; every static tree has the paper's 2n vertex
+  // cuts and 2k intersection cuts (seed 003, section 2.1).
+  std::ifstream c(out + "/aeg.csv");
+  std::string header, line;
+  std::getline(c, header);
+  std::vector<std::string> names;
+  for (std::stringstream hs(header); std::getline(hs, line, ',');) names.push_back(line);
+  std::map<std::string, int> rows;
+  while (std::getline(c, line)) {
+    std::map<std::string, std::string> v;
+    std::stringstream ls(line);
+    for (const std::string& n : names) std::getline(ls, v[n], ',');
+    INFO(line);
+    ++rows[v["part"]];
+    if (v["part"] != "static") continue;
+    CHECK(std::stoul(v["vertex_cuts"]) == 2 * std::stoul(v["n"]));
+    CHECK(std::stoul(v["intersection_cuts"]) == 2 * std::stoul(v["k"]));
+  }
+  CHECK(rows["static"] == 3);   // linear 10 and 20, quadratic 10
+  CHECK(rows["kinetic"] == 3);  // m = 10 and 5, and the rotating scene
+}

@@ -13,6 +13,7 @@ cd "$root"
 "$kvd" bench thesis --sizes 25,50,100,200,400,800 --events 1000 --out data/bench
 "$kvd" bench update --out data/bench
 "$kvd" bench cost --out data/bench
+"$kvd" bench aeg --out data/bench
 # Beside kvd in a build with CGAL (the default): our isolator against CGAL's.
 "$(dirname "$kvd")/kvd_bench_next_root" --degrees 1,2,4,6,8 --bits 64,200 --count 1000 --out data/bench
 python3 data/bench/splice.py

@@ -14,5 +14,7 @@ int thesis(cli::Args& args);
 int update(cli::Args& args);
 // kvd bench cost: exact against double, the filter's statistics, next_root.
 int cost(cli::Args& args);
+// kvd bench aeg: the cylindrical BSP of segments (seed 003) against its bounds.
+int aeg(cli::Args& args);
 
 }  // namespace kvd::bench

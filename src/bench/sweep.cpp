@@ -8,15 +8,16 @@
 
 namespace kvd::bench {
 
-std::vector<std::size_t> sizes_option(const std::string& suite, const std::string& text) {
+std::vector<std::size_t> sizes_option(const std::string& suite, const std::string& text, const std::string& flag,
+                                      const std::string& what) {
   std::vector<std::size_t> sizes;
   for (const std::string& item : cli::comma_list(text)) {
     if (item.size() > 6 || item.find_first_not_of("0123456789") != std::string::npos || std::stoul(item) == 0)
-      throw cli::Usage_error("kvd bench " + suite + ": --sizes expects positive numbers of triangles such as "
-                             "25,50,100, got '" + text + "'");
+      throw cli::Usage_error("kvd bench " + suite + ": " + flag + " expects positive numbers of " + what +
+                             " such as 25,50,100, got '" + text + "'");
     sizes.push_back(std::stoul(item));
   }
-  if (sizes.empty()) throw cli::Usage_error("kvd bench " + suite + ": --sizes needs at least one size");
+  if (sizes.empty()) throw cli::Usage_error("kvd bench " + suite + ": " + flag + " needs at least one size");
   std::sort(sizes.begin(), sizes.end());
   sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
   return sizes;

@@ -13,8 +13,9 @@
 namespace kvd::bench {
 
 // "25,50,100" as sizes, increasing and distinct; a Usage_error naming
-// `kvd bench SUITE` if an item is not a positive number of triangles.
-std::vector<std::size_t> sizes_option(const std::string& suite, const std::string& text);
+// `kvd bench SUITE` and `flag` if an item is not a positive number of `what`.
+std::vector<std::size_t> sizes_option(const std::string& suite, const std::string& text,
+                                      const std::string& flag = "--sizes", const std::string& what = "triangles");
 
 // The uniform-scale or uniform-density scene of `size` triangles, seed 1.
 scene::Scene generated(const std::string& suite, const std::string& family, std::size_t size, const scene::Q& moving,

@@ -15,6 +15,7 @@ const char* const bench_help =
     "  thesis     the thesis's Figures 8.4-8.9 for our implementation\n"
     "  update     the local update against the rebuild (thesis chapter 7)\n"
     "  cost       exact against double, the interval filter, next_root\n"
+    "  aeg        the BSP of segments against the bounds of seed 003\n"
     "\n"
     "Every suite takes --help. Timings are medians of one run on this machine;\n"
     "nothing is asserted about them.\n";
@@ -32,6 +33,7 @@ int bench(Args& args) {
   if (suite == "thesis") return kvd::bench::thesis(rest);
   if (suite == "update") return kvd::bench::update(rest);
   if (suite == "cost") return kvd::bench::cost(rest);
+  if (suite == "aeg") return kvd::bench::aeg(rest);
   throw Usage_error("kvd bench: unknown suite '" + suite + "' (see kvd bench --help)");
 }
 

@@ -5,8 +5,9 @@ comes out the same in a fresh run, and the pages copy the committed tables.
 Usage: reproduce.py KVD SOURCE_DIR WORK_DIR
 
 Re-runs the small cases (the whole accuracy suite, the thesis suite at 25
-triangles, the update suite at 100 triangles, the cost suite at 25, and
-kvd_bench_next_root as committed when it is built beside kvd), compares each fresh CSV row with the
+triangles, the update suite at 100 triangles, the cost suite at 25, the aeg
+suite at 100 segments (and its rotating scene), and kvd_bench_next_root as
+committed when it is built beside kvd), compares each fresh CSV row with the
 committed row of the same key, number by number, and runs splice.py --check.
 Timing quantities differ from run to run and machine to machine and are
 skipped: names ending in _ms or starting with ms_, seconds, the tree and
@@ -64,6 +65,8 @@ def main():
     problems += compare("update.csv", bench / "update.csv", work / "update" / "update.csv", ["triangles", "configuration"])
     run([kvd, "bench", "cost", "--sizes", "25", "--repeats", "1", "--out", str(work / "cost")])
     problems += compare("cost.csv", bench / "cost.csv", work / "cost" / "cost.csv", ["triangles"])
+    run([kvd, "bench", "aeg", "--sizes", "100", "--kinetic-sizes", "100", "--repeats", "1", "--out", str(work / "aeg")])
+    problems += compare("aeg.csv", bench / "aeg.csv", work / "aeg" / "aeg.csv", ["part", "family", "crossings", "n", "m"])
     next_root = pathlib.Path(kvd).parent / "kvd_bench_next_root"
     if next_root.exists():
         (work / "next-root").mkdir(parents=True, exist_ok=True)
