@@ -592,6 +592,32 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 
 }  // namespace
 
+TEST_CASE("kvd certify writes a segment scene's certificate, or nothing on bad input", "[cli][certify][segments]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/segments/over-endpoint.json";
+  const std::string out = std::string(KVD_BINARY_DIR) + "/over-endpoint.cert.json";
+  std::remove(out.c_str());
+  CHECK(run("certify --help").out.find("kvd-segment-event-order/1") != std::string::npos);
+  CHECK(run("certify " + scene + " --out " + out + " --collisions stop").status == 2);
+  CHECK(run("certify " + scene + " --out " + out + " --validate end").status == 2);
+  CHECK(run("certify " + scene + " --out " + out + " --until 4").status == 2);  // after the span's end, 7/2
+  const std::string bad = scene_file("bad-certify-segments.json", R"({"format": "kvd-segments/1", "segments": [
+    {"endpoints": [["0", "0"], ["0", "0"]]}]})");
+  const Run message = run("certify " + bad + " --out " + out, "2>&1 >/dev/null");
+  CHECK(message.status == 2);
+  CHECK(message.out.find(bad + ": /segments/0: ") != std::string::npos);
+  CHECK(!std::ifstream(out).good());
+  // The sinker passes over the floor's right endpoint at t = 3; the last
+  // interval runs to the span's end.
+  const Run r = run("certify " + scene + " --validate every --out " + out);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("1 events in 1 batches") != std::string::npos);
+  const std::string text = file_text(out);
+  CHECK(text.rfind("{\n\"format\": \"kvd-segment-event-order/1\"", 0) == 0);
+  CHECK(text.find("\"end\": \"7/2\",\n\"stopped_by\": \"exhausted\"") != std::string::npos);
+  CHECK(text.find(R"({"certificate": 6, "factor": 0, "interval": ["3", "3"], "multiplicity": 1, "order": "<"})") !=
+        std::string::npos);
+}
+
 TEST_CASE("kvd render draws a segment scene's BSP as SVG, one element per cut", "[cli][render][segments]") {
   const std::string dir = std::string(KVD_SOURCE_DIR) + "/data/segments/";
   const std::string out = std::string(KVD_BINARY_DIR) + "/render-segments.svg";

@@ -111,6 +111,23 @@ TEST_CASE("a flight-plan change remakes the segment's certificates", "[segments]
   }
 }
 
+// A certificate's sign is its key's: the x order of (p, q) in key order,
+// whichever way round the construction asked (set_motion compares them).
+TEST_CASE("certificate signs are those of their keys", "[segments][kinetic]") {
+  const auto s = scene_of({fixed(0, 0, 4, 4), fixed(1, 4, 5, 0), moving(linear(-1, 1), linear(2, 0), linear(3, 0), linear(1, 0))},
+                          {0, 1, 2}, 0, 3);
+  const Exact_kernel k;
+  const Kinetic_segment_bsp<Exact_kernel> kin(k, s, false);
+  const Segment_predicates<Exact_kernel> pred(k, s);
+  std::size_t x_orders = 0;
+  for (const auto& [key, nodes] : kin.certificate_list()) {
+    if (key.kind != Segment_certificate_key::Kind::x_order) continue;
+    ++x_orders;
+    CHECK(kin.sign(key) == pred.compare_x(key.p, key.q, k.time(0)).sign);
+  }
+  CHECK(x_orders > 5);
+}
+
 TEST_CASE("exact event times are exact", "[segments][kinetic]") {
   const auto s = scene_of({fixed(0, 0, 4, 0), moving(linear(2, 0), linear(2, -1), linear(6, 0), linear(0, -1))},
                           {0, 1}, 0, 3);

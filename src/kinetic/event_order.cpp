@@ -7,14 +7,10 @@
 
 namespace kvd::kinetic {
 
-namespace {
-
-// [lo, hi] around t holding no other root of p: t's canonical isolating
-// interval (for a factor of p; Exact_time::canonical, so that the record
-// does not depend on how far comparisons refined t) refined until
-// Descartes' rule, exact at 1, counts one root of p's square-free part
-// inside and none at the ends.
-std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_time& time) {
+// t's canonical isolating interval (for a factor of p) refined until
+// Descartes' rule, exact at 1, counts one root of p's square-free part inside
+// and none at the ends.
+std::pair<mpq_class, mpq_class> isolating_interval(const zpoly::ZPoly& p, const Exact_time& time) {
   const zpoly::ZPoly s = zpoly::square_free(p);
   const Exact_time t = time.canonical();
   for (;;) {
@@ -26,7 +22,11 @@ std::pair<mpq_class, mpq_class> isolating(const zpoly::ZPoly& p, const Exact_tim
   }
 }
 
-}  // namespace
+int root_multiplicity(const Exact_kernel& k, const zpoly::ZPoly& p, const Exact_time& t) {
+  int multiplicity = 0;
+  for (zpoly::ZPoly d = p; k.sign_at(zpoly::to_poly(d), t) == 0; d = zpoly::derivative(d)) ++multiplicity;
+  return multiplicity;
+}
 
 std::size_t Event_order_recorder::id(const Certificate_key& key, const zpoly::ZPoly& p) {
   const std::size_t motions = order_.motion_changes.size();
@@ -63,10 +63,8 @@ Event_order::Root Event_order_recorder::root(const Failure& f, const Exact_time&
   const auto which = std::find_if(it->second.begin(), it->second.end(), vanishes);
   if (which == it->second.end()) throw std::logic_error("no polynomial of " + features(f) + " vanishes at its event");
   const zpoly::ZPoly& p = order_.certificates[*which].polynomial;
-  const auto [lo, hi] = isolating(p, t);
-  int multiplicity = 0;
-  for (zpoly::ZPoly d = p; k_.sign_at(zpoly::to_poly(d), t) == 0; d = zpoly::derivative(d)) ++multiplicity;
-  return {*which, lo, hi, multiplicity};
+  const auto [lo, hi] = isolating_interval(p, t);
+  return {*which, lo, hi, root_multiplicity(k_, p, t)};
 }
 
 void Event_order_recorder::batch(const Batch<Exact_time>& b, bool collision) {

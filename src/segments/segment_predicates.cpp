@@ -176,9 +176,14 @@ Segment_sign Segment_predicates<K>::compare_x(const Site_point& a, const Site_po
     ++counts_.identity;
     return {0, Segment_rule::identity};
   }
-  // One certificate for the pair, whichever way round it is asked.
+  // One certificate for the pair, decided in key order whichever way round
+  // it is asked, so that its sign and factors are the key's.
+  if (b < a) {
+    const Segment_sign r = compare_x(b, a, t);
+    return {-r.sign, r.rule};
+  }
   return decide(
-      {Segment_certificate_key::Kind::x_order, std::min(a, b), std::max(a, b), 0, 0},
+      {Segment_certificate_key::Kind::x_order, a, b, 0, 0},
       [&](const auto& e) {
         const auto pa = e.point(a), pb = e.point(b);
         std::vector<std::decay_t<decltype(pa[0])>> f{pa[0] * pb[2] - pb[0] * pa[2]};

@@ -1,11 +1,13 @@
 // kvd certify SCENE --out FILE: the exact simulation's event-order
-// certificate (proofs/event-order-certificate.md).
+// certificate (proofs/event-order-certificate.md); a segment scene's is
+// written by segment_certify.cpp.
 #include <iostream>
 
 #include "cli.hpp"
 #include "json_out.hpp"
 #include "kvd/kinetic/event_order.hpp"
 #include "kvd/scene/scene_io.hpp"
+#include "segment_commands.hpp"
 
 namespace kvd::cli {
 
@@ -31,6 +33,14 @@ const char* const certify_help =
     "  --collisions C   reverse (default), or stop at the first contact\n"
     "  --validate V     check the tree against fresh builds: every, end or none\n"
     "                   (default none; the certificate does not rely on it)\n"
+    "\n"
+    "For a kvd-segments/1 scene: the exact kinetic cylindrical BSP (seed 003,\n"
+    "as kvd simulate runs it) and a kvd-segment-event-order/1 certificate: the\n"
+    "scene, every certificate in force (an x order, a side or the order of two\n"
+    "lines at a point, with its sign and factor polynomials), every failure\n"
+    "with an interval isolating its time and its order relation to the one\n"
+    "before, and the certificates in force between consecutive batches. Takes\n"
+    "--events, --until and --validate every|none.\n"
     "\n"
     "FILE is written completely or not at all. Exit status: 0 on success, 1 on a\n"
     "failed validation (nothing written), 2 on bad input.\n";
@@ -98,6 +108,7 @@ int certify(Args& args) {
   kinetic::Options o;
   o.validate = kinetic::Validation::none;
   std::optional<std::string> out;
+  std::vector<std::string> triangle_only;  // flags a segment scene refuses
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -107,12 +118,23 @@ int certify(Args& args) {
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--until") o.until = exact_option("certify", a, args.value(a));
     else if (a == "--out") out = args.value(a);
-    else if (a == "--collisions") o.collisions = collisions_option("certify", args.value(a));
+    else if (a == "--collisions") {
+      o.collisions = collisions_option("certify", args.value(a));
+      triangle_only.push_back(a);
+    }
     else if (a == "--validate") o.validate = validation_option("certify", args.value(a));
     else if (a == "--json" || !sa.take(args, a)) args.unknown(a);
   }
   if (!out) throw Usage_error("kvd certify: missing --out FILE (see kvd certify --help)");
-  const scene::Scene s = sa.load_scene("certify");
+  const std::string text = sa.read_text("certify");
+  if (segments::scene_format(text) == "kvd-segments/1") {
+    if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
+    refuse_triangle_flags("certify", triangle_only);
+    if (o.validate == kinetic::Validation::end)
+      throw Usage_error("kvd certify: --validate end: a segment scene takes every or none");
+    return segment_certify(sa, text, {*out, o.max_events, o.until, o.validate == kinetic::Validation::every});
+  }
+  const scene::Scene s = sa.read_scene("certify", text);
   if (o.until) require_in_span("certify", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd certify");
   kinetic::Event_order_recorder recorder;

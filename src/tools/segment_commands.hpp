@@ -1,4 +1,4 @@
-// kvd build and kvd simulate on segment scenes (kvd-segments/1): the
+// kvd build, simulate and certify on segment scenes (kvd-segments/1): the
 // cylindrical BSP of seed 003 and its kinetic version. The commands read the
 // file once and come here when its "format" says so.
 #pragma once
@@ -28,6 +28,16 @@ struct Segment_run_options {
 };
 
 int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o);
+
+struct Segment_certify_options {
+  std::string out;
+  std::size_t max_events = 100;
+  std::optional<mpq_class> until;
+  bool validate = false;
+};
+
+// The exact run's event-order certificate, kvd-segment-event-order/1, written to o.out.
+int segment_certify(const Scene_args& sa, const std::string& text, const Segment_certify_options& o);
 
 // Scene_error naming the first segment with a number K's field cannot hold
 // (1e400 is infinite in double); the exact kernel holds all.

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # kvd certify on one scene, then the independent checker on the certificate
-# (it must accept it) and on tampered copies (it must reject each one).
+# (it must accept it) and on tampered copies (it must reject each one): those
+# of tamper.py, or of tamper_segments.py for a segment scene's certificate.
 # usage: run_certify_check.sh KVD PYTHON3 SOURCE_DIR SCENE EVENTS [MUST_APPLY...]
 # SCENE is a file, or "generate:ARGS" for the scene `kvd generate ARGS` writes.
 # Each MUST_APPLY tampering must apply to the certificate (and be rejected).
@@ -20,10 +21,12 @@ fi
 checker=$src/proofs/check-certificate
 "$kvd" certify "$scene" --events "$events" --out "$work/cert.json" >/dev/null
 "$checker" "$work/cert.json"
+tamper=$src/tests/certify/tamper.py
+if grep -q '^"format": "kvd-segment-event-order/1",$' "$work/cert.json"; then tamper=$src/tests/certify/tamper_segments.py; fi
 applied=0
-for t in $("$python" "$src/tests/certify/tamper.py" --list); do
+for t in $("$python" "$tamper" --list); do
   status=0
-  "$python" "$src/tests/certify/tamper.py" "$work/cert.json" "$t" "$work/$t.json" >/dev/null || status=$?
+  "$python" "$tamper" "$work/cert.json" "$t" "$work/$t.json" >/dev/null || status=$?
   if [ "$status" -eq 3 ]; then
     if [[ $must_apply == *" $t "* ]]; then echo "FAIL: $t does not apply to $(basename "$scene")"; exit 1; fi
     echo "$t: not applicable to $(basename "$scene")"

@@ -60,10 +60,6 @@ import sys
 from fractions import Fraction
 from math import gcd
 
-TAMPERINGS = ["swap-order", "move-root", "claim-equal", "drop-certificate", "drop-event", "change-polynomial",
-              "move-vertex", "shift-reversal", "late-contact", "unreversed-motion"]
-
-
 class NotApplicable(Exception):
     pass
 
@@ -457,7 +453,7 @@ def claim_equal(doc):
 def instants(doc):
     """The run order of batches and motion changes: ("batch", first event) or ("change", index)."""
     out = []
-    changes = doc["motion_changes"]
+    changes = doc.get("motion_changes", [])  # none in a segment certificate
     j = 0
     for members in batches_of(doc["events"]):
         while j < len(changes) and changes[j]["after_events"] <= members[0]:
@@ -490,7 +486,7 @@ def drop_event(doc):
         if k + 1 < len(ivs):
             doc["events"] = [e for i, e in enumerate(ev) if i not in set(members)]
             del ivs[k + 1]
-            for c in doc["motion_changes"]:
+            for c in doc.get("motion_changes", []):
                 if c["after_events"] > members[0]:
                     c["after_events"] -= len(members)
             return "batch %d (events %d..%d) deleted, intervals %d and %d merged" % (
@@ -608,15 +604,17 @@ ACTIONS = {"swap-order": swap_order, "move-root": move_root, "claim-equal": clai
            "late-contact": late_contact, "unreversed-motion": unreversed_motion}
 
 
-def main(argv):
+def main(argv, actions=ACTIONS, text=__doc__):
+    """The command line of a tampering script with these actions (tamper_segments.py has its own)."""
+    name = argv[0].rsplit("/", 1)[-1]
     if len(argv) == 2 and argv[1] in ("--help", "-h"):
-        sys.stdout.write(__doc__)
+        sys.stdout.write(text)
         return 0
     if len(argv) == 2 and argv[1] == "--list":
-        sys.stdout.write("\n".join(TAMPERINGS) + "\n")
+        sys.stdout.write("\n".join(actions) + "\n")
         return 0
-    if len(argv) != 4 or argv[2] not in ACTIONS:
-        sys.stderr.write("usage: tamper.py IN TAMPERING OUT   (TAMPERING: %s)\n" % ", ".join(TAMPERINGS))
+    if len(argv) != 4 or argv[2] not in actions:
+        sys.stderr.write("usage: %s IN TAMPERING OUT   (TAMPERING: %s)\n" % (name, ", ".join(actions)))
         return 2
     try:
         with open(argv[1], encoding="utf-8") as fh:
@@ -624,16 +622,16 @@ def main(argv):
             # string, which the scene format reads as the same exact decimal.
             doc = json.load(fh, parse_float=str)
     except (OSError, ValueError) as ex:
-        sys.stderr.write("tamper.py: cannot read %s: %s\n" % (argv[1], ex))
+        sys.stderr.write("%s: cannot read %s: %s\n" % (name, argv[1], ex))
         return 2
     try:
-        what = ACTIONS[argv[2]](doc)
+        what = actions[argv[2]](doc)
     except NotApplicable as ex:
-        sys.stderr.write("tamper.py: %s does not apply: %s\n" % (argv[2], ex))
+        sys.stderr.write("%s: %s does not apply: %s\n" % (name, argv[2], ex))
         return 3
     except (KeyError, TypeError, ValueError, IndexError) as ex:
-        sys.stderr.write("tamper.py: %s: the input is not a certificate this script understands: %r\n"
-                         % (argv[2], ex))
+        sys.stderr.write("%s: %s: the input is not a certificate this script understands: %r\n"
+                         % (name, argv[2], ex))
         return 2
     with open(argv[3], "w", encoding="utf-8") as fh:
         json.dump(doc, fh, indent=1)

@@ -55,6 +55,13 @@ struct Event_order {
   std::vector<Motion_change> motion_changes;
 };
 
+// [lo, hi] around the root t of p holding no other distinct root of p (lo =
+// hi when t is rational), from t's canonical interval, so that it does not
+// depend on how far comparisons refined t.
+std::pair<mpq_class, mpq_class> isolating_interval(const zpoly::ZPoly& p, const Exact_time& t);
+// The multiplicity of t as a root of p (0 when it is none).
+int root_multiplicity(const Exact_kernel& k, const zpoly::ZPoly& p, const Exact_time& t);
+
 // Records an exact simulation as an Event_order: pass it to simulate(). A
 // reversal that adds objects at the instant of the previous one is a motion
 // change of its own, at the same time.
