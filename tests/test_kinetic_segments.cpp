@@ -239,7 +239,8 @@ TEMPLATE_TEST_CASE("generated segment scenes: every kernel runs the exact events
       Kinetic_segment_bsp<Exact_kernel> exact(Exact_kernel(), s, false);
       const TestType k;
       Kinetic_segment_bsp<TestType> fp(k, s, true);
-      const auto a = run(exact, 40), b = run(fp, 40);
+      const auto a = run(exact, 40);
+      const auto b = run(fp, 40);
       INFO("seed " << seed);
       REQUIRE(a.size() == b.size());
       for (std::size_t i = 0; i < a.size(); ++i) {
