@@ -180,12 +180,23 @@ TEST_CASE("the invariants catch a tree that is not a BSP of its segments", "[seg
   CHECK(std::any_of(v.begin(), v.end(), [](const std::string& m) { return m.find("meets the leaf") != std::string::npos; }));
 }
 
-TEMPLATE_TEST_CASE("random segment scenes satisfy the BSP invariants, and every kernel builds the exact tree",
-                   "[segments][bsp]", KVD_ALL_KERNELS) {
-  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+TEST_CASE("random segment scenes satisfy the BSP invariants", "[segments][bsp]") {
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    INFO("seed " << seed);
+    build_at<Exact_kernel>(random_scene(seed, 12, 20), 0);
+  }
+}
+
+// Small integers: the floating-point kernels compute every value exactly,
+// so they must build the exact tree, degenerate cases included.
+TEMPLATE_TEST_CASE("random segment scenes: every kernel builds the exact tree", "[segments][bsp]", Double_kernel,
+                   Mpfr_kernel) {
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     const Segment_scene s = random_scene(seed, 12, 20);
     INFO("seed " << seed);
-    const std::string exact = build_at<Exact_kernel>(s, 0).text();
-    CHECK(build_at<TestType>(s, 0).text() == exact);
+    const Exact_kernel exact;
+    const TestType k;
+    const std::string expected = build_cylindrical_bsp(Segment_predicates<Exact_kernel>(exact, s), exact.time(0)).text();
+    CHECK(build_cylindrical_bsp(Segment_predicates<TestType>(k, s), k.time(0)).text() == expected);
   }
 }
