@@ -58,11 +58,19 @@ const std::vector<Json_value>& Json_reader::array(const Json_value& v, const std
   return v.items;
 }
 
-std::vector<Poly<mpq_class>> Json_reader::point(const Json_value& v, const std::string& at, std::size_t size) const {
+std::vector<Poly<mpq_class>> Json_reader::polys(const Json_value& v, const std::string& at, std::size_t size) const {
   const auto& items = array(v, at, size);
   std::vector<Poly<mpq_class>> p;
   for (std::size_t i = 0; i < size; ++i) p.push_back(poly(items[i], at + "/" + std::to_string(i)));
   return p;
+}
+
+std::vector<std::vector<Poly<mpq_class>>> Json_reader::matrix(const Json_value& v, const std::string& at,
+                                                              std::size_t size) const {
+  const auto& rows = array(v, at, size);
+  std::vector<std::vector<Poly<mpq_class>>> m;
+  for (std::size_t i = 0; i < size; ++i) m.push_back(polys(rows[i], at + "/" + std::to_string(i), size));
+  return m;
 }
 
 std::uint64_t Json_reader::unsigned_integer(const Json_value& v, const std::string& at) const {

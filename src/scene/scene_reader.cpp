@@ -1,5 +1,6 @@
 // The scene reader: JSON tree to Scene, with every rejection of the format
 // page reported at its JSON place.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,7 +23,7 @@ public:
   using Json_reader::Json_reader;
 
   Motion_point point4(const Json_value& v, const std::string& at) const {
-    const std::vector<QPoly> c = point(v, at, 4);
+    const std::vector<QPoly> c = polys(v, at, 4);
     const Motion_point p{{c[0], c[1], c[2], c[3]}};
     if (p[0].is_zero() && p[1].is_zero() && p[2].is_zero() && p[3].is_zero())
       fail(at, "a point4 that is identically [0, 0, 0, 0]");
@@ -47,16 +48,12 @@ Motion Reader::read_motion(const Json_value& v, const std::string& at, std::size
   const std::string here = at + "/" + key;
   if (key == "translation") {
     m.kind = Motion::Kind::translation;
-    const auto& items = array(value, here, 3);
-    for (std::size_t i = 0; i < 3; ++i) m.translation[i] = poly(items[i], here + "/" + std::to_string(i));
+    const std::vector<QPoly> d = polys(value, here, 3);
+    std::copy(d.begin(), d.end(), m.translation.begin());
   } else if (key == "matrix") {
     m.kind = Motion::Kind::matrix;
-    const auto& rows = array(value, here, 4);
-    for (std::size_t i = 0; i < 4; ++i) {
-      const std::string row_at = here + "/" + std::to_string(i);
-      const auto& row = array(rows[i], row_at, 4);
-      for (std::size_t j = 0; j < 4; ++j) m.matrix[i][j] = poly(row[j], row_at + "/" + std::to_string(j));
-    }
+    const auto rows = matrix(value, here, 4);
+    for (std::size_t i = 0; i < 4; ++i) std::copy(rows[i].begin(), rows[i].end(), m.matrix[i].begin());
   } else {
     m.kind = Motion::Kind::vertices;
     const auto& items = array(value, here, vertex_count);

@@ -1,5 +1,6 @@
 // The segment scene reader: JSON tree to Segment_scene, with every rejection
 // of SEGMENT_FORMAT.md reported at its JSON place.
+#include <algorithm>
 #include <set>
 
 #include "kvd/detail/scene/json_reader.hpp"
@@ -38,7 +39,7 @@ Point3 Reader::rest_point(const Json_value& v, const std::string& at) const {
 }
 
 Motion_point3 Reader::point3(const Json_value& v, const std::string& at) const {
-  const std::vector<QPoly> c = point(v, at, 3);
+  const std::vector<QPoly> c = polys(v, at, 3);
   return {c[0], c[1], c[2]};
 }
 
@@ -51,16 +52,12 @@ Segment_motion Reader::read_motion(const Json_value& v, const std::string& at) c
   const std::string here = at + "/" + key;
   if (key == "translation") {
     m.kind = Segment_motion::Kind::translation;
-    const auto& items = array(value, here, 2);
-    for (std::size_t i = 0; i < 2; ++i) m.translation[i] = poly(items[i], here + "/" + std::to_string(i));
+    const std::vector<QPoly> d = polys(value, here, 2);
+    std::copy(d.begin(), d.end(), m.translation.begin());
   } else if (key == "matrix") {
     m.kind = Segment_motion::Kind::matrix;
-    const auto& rows = array(value, here, 3);
-    for (std::size_t i = 0; i < 3; ++i) {
-      const std::string row_at = here + "/" + std::to_string(i);
-      const auto& row = array(rows[i], row_at, 3);
-      for (std::size_t j = 0; j < 3; ++j) m.matrix[i][j] = poly(row[j], row_at + "/" + std::to_string(j));
-    }
+    const auto rows = matrix(value, here, 3);
+    for (std::size_t i = 0; i < 3; ++i) std::copy(rows[i].begin(), rows[i].end(), m.matrix[i].begin());
   } else {
     m.kind = Segment_motion::Kind::endpoints;
     const auto& items = array(value, here, 2);

@@ -32,8 +32,11 @@ public:
   Poly<mpq_class> poly(const Json_value& v, const std::string& at) const;
   // An array, of exactly `size` entries unless size is 0.
   const std::vector<Json_value>& array(const Json_value& v, const std::string& at, std::size_t size = 0) const;
-  // An array of `size` polynomials (a homogeneous point such as a point4).
-  std::vector<Poly<mpq_class>> point(const Json_value& v, const std::string& at, std::size_t size) const;
+  // An array of `size` polynomials (a homogeneous point such as a point4, or
+  // a translation).
+  std::vector<Poly<mpq_class>> polys(const Json_value& v, const std::string& at, std::size_t size) const;
+  // A size x size matrix of polynomials, row by row (a homogeneous motion).
+  std::vector<std::vector<Poly<mpq_class>>> matrix(const Json_value& v, const std::string& at, std::size_t size) const;
   std::uint64_t unsigned_integer(const Json_value& v, const std::string& at) const;
   // An index below n; `what` names it in messages ("a vertex").
   std::size_t index(const Json_value& v, const std::string& at, std::size_t n, const char* what) const;
