@@ -4,40 +4,19 @@
 #include <catch2/catch.hpp>
 
 #include "kernels.hpp"
+#include "segment_scenes.hpp"
 #include "kvd/detail/scene/priority.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 #include "kvd/segments/segment_generators.hpp"
 
 using namespace kvd;
 using namespace kvd::segments;
+using kvd::test::fixed;
+using kvd::test::linear;
+using kvd::test::moving;
+using kvd::test::scene_of;
 
 namespace {
-
-Segment fixed(long x0, long y0, long x1, long y1) {
-  Segment s;
-  s.rest = {Point3{x0, y0, 1}, Point3{x1, y1, 1}};
-  return s;
-}
-
-QPoly linear(long c0, long c1) { return QPoly({mpq_class(c0), mpq_class(c1)}); }
-
-Segment moving(const QPoly& x0, const QPoly& y0, const QPoly& x1, const QPoly& y1) {
-  Segment s;
-  s.rest = {Point3{0, 0, 1}, Point3{0, 0, 1}};
-  s.motion.kind = Segment_motion::Kind::endpoints;
-  s.motion.endpoints = {Motion_point3{x0, y0, QPoly(1)}, Motion_point3{x1, y1, QPoly(1)}};
-  return s;
-}
-
-Segment_scene scene_of(std::vector<Segment> segments, std::vector<std::size_t> order, long start, long end) {
-  Segment_scene s;
-  s.segments = std::move(segments);
-  s.order = std::move(order);
-  s.start = start;
-  s.end = mpq_class(end);
-  s.derive();
-  return s;
-}
 
 template <class K>
 std::vector<typename Kinetic_segment_bsp<K>::Batch> run(Kinetic_segment_bsp<K>& kin, std::size_t max_batches) {

@@ -1,0 +1,42 @@
+// Small segment scenes built in code, shared by the segment tests.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "kvd/segments/segment_scene.hpp"
+
+namespace kvd::test {
+
+inline segments::Segment fixed(long x0, long y0, long x1, long y1) {
+  segments::Segment s;
+  s.rest = {segments::Point3{x0, y0, 1}, segments::Point3{x1, y1, 1}};
+  return s;
+}
+
+inline segments::QPoly linear(long c0, long c1) { return segments::QPoly({mpq_class(c0), mpq_class(c1)}); }
+
+// A segment whose endpoints move: each coordinate a polynomial in t.
+inline segments::Segment moving(const segments::QPoly& x0, const segments::QPoly& y0, const segments::QPoly& x1,
+                                const segments::QPoly& y1) {
+  segments::Segment s;
+  s.rest = {segments::Point3{0, 0, 1}, segments::Point3{0, 0, 1}};
+  s.motion.kind = segments::Segment_motion::Kind::endpoints;
+  s.motion.endpoints = {segments::Motion_point3{x0, y0, segments::QPoly(1)},
+                        segments::Motion_point3{x1, y1, segments::QPoly(1)}};
+  return s;
+}
+
+// The segments in the given priority order, over [start, end] (no end: none).
+inline segments::Segment_scene scene_of(std::vector<segments::Segment> segs, std::vector<std::size_t> order,
+                                        long start = 0, std::optional<long> end = std::nullopt) {
+  segments::Segment_scene s;
+  s.segments = std::move(segs);
+  s.order = std::move(order);
+  s.start = start;
+  if (end) s.end = mpq_class(*end);
+  s.derive();
+  return s;
+}
+
+}  // namespace kvd::test
