@@ -577,6 +577,35 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
   CHECK(late.out.find("--time 9 is outside the scene's time span [0, 7/2]") != std::string::npos);
 }
 
+TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point one, or refuses bad input",
+          "[cli][diff][segments]") {
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/segments/over-endpoint.json";
+  CHECK(run("diff --help").out.find("kvd-segments/1") != std::string::npos);
+  // The one edge event at t = 3, found at exactly 3 in MPFR, the same tree after it.
+  const Run r = run("diff " + scene + " --kernel mpfr:64 --json");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find(R"({"event": 0, "certificate": "side", "event_kind": "edge", "features": "s0.1 s1", )"
+                   R"("exact_time": "3", "exact_approx": "3", "inexact_event": 0, )"
+                   R"("inexact_time": "3.0000000000000000e+00", "in_order": true, "structure_equal": true, )"
+                   R"("time_error": 0, "relative_time_error": 0})") != std::string::npos);
+  CHECK(r.out.find("\"events_compared\": 1,\n\"first_divergence_event\": null,") != std::string::npos);
+  CHECK(r.out.find("\"recovery\": {\"failed_builds\": 0, \"refires\": 0, \"stale_trees\": 0, \"rebuilds\": 0") !=
+        std::string::npos);
+  CHECK(run("diff " + scene + " --kernel double").out.find("event 0 side (edge) s0.1 s1 at 3: double event 0 at 3, error 0") !=
+        std::string::npos);
+  const Run kernel = run("diff " + scene + " --kernel bogus", "2>&1");
+  CHECK(kernel.status == 2);
+  CHECK(kernel.out.find("unknown kernel 'bogus'") != std::string::npos);
+  const Run flag = run("diff " + scene + " --kernel double --allow-intersecting", "2>&1");
+  CHECK(flag.status == 2);
+  CHECK(flag.out.find("--allow-intersecting: only for triangle scenes") != std::string::npos);
+  const std::string bad = scene_file("bad-diff-segments.json", R"({"format": "kvd-segments/1", "segments": [
+    {"endpoints": [["0", "0"], ["1", "x"]]}]})");
+  const Run message = run("diff " + bad + " --kernel double", "2>&1");
+  CHECK(message.status == 2);
+  CHECK(message.out.find(bad + ": /segments/0/endpoints/1/1: ") != std::string::npos);
+}
+
 namespace {
 
 std::string file_text(const std::string& path) {

@@ -143,7 +143,7 @@ std::size_t Bsp_builder<K>::step(std::size_t n, const Arrival& a) const {
     s = p_.side(a.a, node.segment, t_).sign;
     if (s == 0) s = a.dir;
   } else {
-    if (node.point == a.a) throw std::logic_error("cylindrical BSP: a point is cut twice in one region");
+    if (node.point == a.a) throw Bsp_contradiction("cylindrical BSP: a point is cut twice in one region");
     s = p_.compare_x(a.a, node.point, t_).sign;
   }
   return static_cast<std::size_t>(node.child[s > 0]);
@@ -183,7 +183,7 @@ void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
   for (std::size_t k = path.size() - 1; k > 0; --k) {
     p_.at_node(static_cast<std::int32_t>(path[k]));
     if (step(path[k], a) != path[k - 1])
-      throw std::logic_error("cylindrical BSP: a crossing found below a node does not reach it");
+      throw Bsp_contradiction("cylindrical BSP: a crossing found below a node does not reach it");
   }
 }
 

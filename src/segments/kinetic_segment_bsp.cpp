@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iterator>
 #include <stdexcept>
+#include <type_traits>
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
@@ -24,7 +25,36 @@ Kinetic_segment_bsp<K>::Kinetic_segment_bsp(const K& k, Segment_scene scene, boo
       end_(bounded_ ? k_.time(from_rational<typename K::FT>(*scene_.end)) : now_),
       pred_(k_, scene_) {
   pred_.record(recorder());
-  rebuild();
+  guarded([this] { rebuild(); });
+}
+
+template <class K>
+template <class F>
+bool Kinetic_segment_bsp<K>::guarded(F f) {
+  if constexpr (std::is_same_v<K, Exact_kernel>) {
+    f();
+    return false;
+  } else {
+    try {
+      f();
+      return false;
+    } catch (const Bsp_contradiction&) {
+      ++recovery_.failed_builds;
+    }
+    typename K::FT step = k_.epsilon();
+    for (int i = 0; i <= kinetic::recovery_steps; ++i, step = step * typename K::FT(2)) {
+      if (i > 0) now_ = now_ + step;
+      try {
+        rebuild();
+        ++recovery_.rebuilds;
+        return true;
+      } catch (const Bsp_contradiction&) {
+      }
+    }
+    ++recovery_.unrepaired;
+    queue_.clear();  // the run stops here
+    return true;
+  }
 }
 
 template <class K>
@@ -197,15 +227,21 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
     const Segment_predicates<K> oracle(k_, scene_);
     const Time mid = kinetic::between(k_, now_, t);
     ++validations_;
-    if (build_cylindrical_bsp(oracle, mid).text() != tree_.text())
-      failures_.push_back("the tree in force before t = " + k_.to_string(t) + " differs from a fresh build at t = " +
-                          k_.to_string(mid));
+    const std::string where = "the tree in force before t = " + k_.to_string(t);
+    try {
+      if (build_cylindrical_bsp(oracle, mid).text() != tree_.text())
+        failures_.push_back(where + " differs from a fresh build at t = " + k_.to_string(mid));
+    } catch (const Bsp_contradiction& e) {
+      if constexpr (std::is_same_v<K, Exact_kernel>) throw;
+      failures_.push_back(where + ": the fresh build at t = " + k_.to_string(mid) + " contradicts itself (" + e.what() +
+                          ")");
+    }
   }
   const auto start = std::chrono::steady_clock::now();
   now_ = t;
   // The failing certificates go first: those decided again get a new failure time.
   for (const auto& key : b.failing) certs_.erase(key);
-  b.changed = update(std::move(nodes), b.nodes_rebuilt);
+  b.changed = guarded([&] { b.changed = update(std::move(nodes), b.nodes_rebuilt); }) || b.changed;
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certs_.size();
   return b;
@@ -285,7 +321,9 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
   }
   pred_.record(recorder());
   std::size_t made = 0;
-  return !nodes.empty() && update(std::move(nodes), made);
+  bool tree_changed = false;
+  if (!nodes.empty()) tree_changed = guarded([&] { tree_changed = update(std::move(nodes), made); }) || tree_changed;
+  return tree_changed;
 }
 
 template <class K>

@@ -116,6 +116,25 @@ bool Segment_predicates<K>::vanishes(const P& f) const {
                      [&](const auto& c) { return k_->sign(c) == 0; });
 }
 
+std::string point_name(const Site_point& p) {
+  if (p.kind == Site_point::Kind::endpoint) return "s" + std::to_string(p.a / 2) + "." + std::to_string(p.a % 2);
+  return "s" + std::to_string(p.a) + "xs" + std::to_string(p.b);
+}
+
+const char* kind_name(Segment_certificate_key::Kind k) {
+  static const char* const names[] = {"x_order", "side", "order_at"};
+  return names[static_cast<int>(k)];
+}
+
+std::string features(const Segment_certificate_key& k) {
+  using Kind = Segment_certificate_key::Kind;
+  std::string out = point_name(k.p) + " ";
+  if (k.kind == Kind::x_order) return out + point_name(k.q);
+  out += "s" + std::to_string(k.i);
+  if (k.kind == Kind::order_at) out += " s" + std::to_string(k.j);
+  return out;
+}
+
 Segment_event event_of(const Segment_certificate_key& k, const std::vector<std::size_t>& rank) {
   using Kind = Segment_certificate_key::Kind;
   const bool endpoint = k.p.kind == Site_point::Kind::endpoint;

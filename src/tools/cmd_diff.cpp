@@ -3,9 +3,11 @@
 #include <iostream>
 
 #include "cli.hpp"
-#include "json_out.hpp"
+#include "diff_report.hpp"
 #include "kvd/kinetic/differential.hpp"
+#include "kvd/segments/segment_io.hpp"
 #include "report.hpp"
+#include "segment_commands.hpp"
 
 namespace kvd::cli {
 
@@ -38,88 +40,27 @@ const char* const diff_help =
     "           \"max_relative_time_error\": X, \"seconds_exact\": X,\n"
     "           \"seconds_inexact\": X, \"recovery\": {...}}\n"
     "\n"
+    "A segment scene (kvd-segments/1) runs the kinetic segment BSP the same way.\n"
+    "Its events are the certificates of kvd certify: in place of \"certificate\" and\n"
+    "\"nodes\", \"certificate\": \"x_order\"|\"side\"|\"order_at\", \"event_kind\": the\n"
+    "paper's vertex|edge|intersection|flip, \"features\": \"s0.1 s2xs3\". Its trees\n"
+    "are compared by their text. Its floating-point recovery repairs only\n"
+    "builds whose signs contradict each other (failed_builds, rebuilds,\n"
+    "unrepaired), by building again at now + 2^i epsilon.\n"
+    "\n"
     "first_divergence_event is the first exact event (from 0) that is missed,\n"
     "out of order, followed by another tree, or preceded by a spurious event;\n"
     "events_compared when the runs differ only after the last exact event.\n"
     "Divergence is a finding: exit status 0, or 2 on bad input.\n";
 
-// An exact error in scientific notation, or null.
-Json error_json(const std::optional<mpq_class>& q) { return q ? decimal(scientific(*q)) : Json(nullptr); }
-
-void print_json(const std::string& scene, const std::string& kernel, const kinetic::Differential& d,
-                const kinetic::Simulation<Exact_time>& exact) {
-  Json events = Json::array();
-  for (std::size_t i = 0; i < d.events.size(); ++i) {
-    const auto& m = d.events[i];
-    const Exact_time& t = exact.batches[m.exact_batch].time;
-    events.push_back({{"event", i},
-                      {"certificate", kinetic::to_string(m.failure.type)},
-                      {"nodes", kinetic::features(m.failure)},
-                      {"exact_time", t.to_string()},
-                      {"exact_approx", approx(t.to_double())},
-                      {"inexact_event", m.inexact_event ? Json(*m.inexact_event) : Json(nullptr)},
-                      {"inexact_time", m.inexact_event ? Json(d.inexact[*m.inexact_event].time) : Json(nullptr)},
-                      {"in_order", m.in_order},
-                      {"structure_equal", m.structure_equal},
-                      {"time_error", m.inexact_event ? decimal(scientific(m.time_error)) : Json(nullptr)},
-                      {"relative_time_error", error_json(m.relative_time_error)}});
-  }
-  Json spurious = Json::array();
-  for (std::size_t j = 0; j < d.inexact.size(); ++j)
-    if (!d.inexact[j].exact_event)
-      spurious.push_back({{"inexact_event", j},
-                          {"certificate", kinetic::to_string(d.inexact[j].failure.type)},
-                          {"nodes", kinetic::features(d.inexact[j].failure)},
-                          {"inexact_time", d.inexact[j].time}});
-  const Json report = {
-      {"scene", scene},
-      {"kernel", kernel},
-      {"events", events},
-      {"spurious", spurious},
-      {"events_compared", d.events.size()},
-      {"first_divergence_event", d.first_divergence_event ? Json(*d.first_divergence_event) : Json(nullptr)},
-      {"order_mismatches", d.order_mismatches},
-      {"missed_events", d.missed_events},
-      {"spurious_events", d.spurious_events},
-      {"structure_mismatches", d.structure_mismatches},
-      {"max_time_error", decimal(scientific(d.max_time_error))},
-      {"max_relative_time_error", decimal(scientific(d.max_relative_time_error))},
-      {"seconds_exact", decimal(fixed(d.seconds_exact, 6))},
-      {"seconds_inexact", decimal(fixed(d.seconds_inexact, 6))},
-      {"recovery", recovery_json(d.recovery)}};
-  std::cout << json_lines(report) << "\n";
-}
-
-void print_text(const char* kernel, const kinetic::Differential& d, const kinetic::Simulation<Exact_time>& exact) {
-  for (std::size_t i = 0; i < d.events.size(); ++i) {
-    const auto& m = d.events[i];
-    std::cout << "event " << i << " " << kinetic::to_string(m.failure.type) << " " << kinetic::features(m.failure) << " at "
-              << approx(exact.batches[m.exact_batch].time.to_double()) << ": ";
-    if (!m.inexact_event) {
-      std::cout << "missed\n";
-      continue;
-    }
-    std::cout << kernel << " event " << *m.inexact_event << " at " << d.inexact[*m.inexact_event].time << ", error "
-              << scientific(m.time_error) << (m.in_order ? "" : ", out of order")
-              << (m.structure_equal ? "" : ", another tree after it") << "\n";
-  }
-  for (std::size_t j = 0; j < d.inexact.size(); ++j)
-    if (!d.inexact[j].exact_event)
-      std::cout << kernel << " event " << j << " " << kinetic::to_string(d.inexact[j].failure.type) << " "
-                << kinetic::features(d.inexact[j].failure) << " at " << d.inexact[j].time << ": spurious\n";
-  std::cout << "events compared:      " << d.events.size() << "\n"
-            << "first divergence:     "
-            << (d.first_divergence_event ? "event " + std::to_string(*d.first_divergence_event) : std::string("none"))
-            << "\n"
-            << "order mismatches:     " << d.order_mismatches << "\n"
-            << "missed events:        " << d.missed_events << "\n"
-            << "spurious events:      " << d.spurious_events << "\n"
-            << "structure mismatches: " << d.structure_mismatches << "\n"
-            << "max time error:       " << scientific(d.max_time_error) << " (relative "
-            << scientific(d.max_relative_time_error) << ")\n"
-            << "seconds:              exact " << fixed(d.seconds_exact, 3) << ", " << kernel << " "
-            << fixed(d.seconds_inexact, 3) << "\n"
-            << "recovery (" << kernel << "): " << recovery_text(d.recovery) << "\n";
+Diff_view<kinetic::Failure> view(const kinetic::Differential& d, const kinetic::Simulation<Exact_time>& exact) {
+  return {d,
+          [&exact](std::size_t b) -> const Exact_time& { return exact.batches[b].time; },
+          [](const kinetic::Failure& f) {
+            return Json{{"certificate", kinetic::to_string(f.type)}, {"nodes", kinetic::features(f)}};
+          },
+          [](const kinetic::Failure& f) { return std::string(kinetic::to_string(f.type)) + " " + kinetic::features(f); },
+          d.recovery};
 }
 
 }  // namespace
@@ -141,7 +82,12 @@ int diff(Args& args) {
     else if (!sa.take(args, a)) args.unknown(a);
   }
   if (!kernel) throw Usage_error("kvd diff: missing --kernel double|mpfr:BITS (see kvd diff --help)");
-  const scene::Scene s = sa.load_scene("diff");
+  const std::string text = sa.read_text("diff");
+  if (segments::scene_format(text) == "kvd-segments/1") {
+    if (sa.load.allow_intersecting) refuse_triangle_flags("diff", {"--allow-intersecting"});
+    return segment_diff(sa, text, *kernel, events, epsilon);
+  }
+  const scene::Scene s = sa.read_scene("diff", text);
   const auto progress = [](const char* which) { return progress_every_few_seconds(std::string("kvd diff: ") + which + " run"); };
   // Validate the kernel name before the exact run.
   with_kernel(
@@ -158,8 +104,8 @@ int diff(Args& args) {
       [&](const auto& k) {
         const char* name = std::decay_t<decltype(k)>::name;
         const auto d = kinetic::compare_with(exact, k, s, progress(name));
-        if (sa.json) print_json(*sa.path, *kernel, d, exact.sim);
-        else print_text(kernel->c_str(), d, exact.sim);
+        if (sa.json) print_diff_json(*sa.path, *kernel, view(d, exact.sim));
+        else print_diff_text(*kernel, view(d, exact.sim));
         return 0;
       },
       epsilon);

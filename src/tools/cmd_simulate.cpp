@@ -95,7 +95,10 @@ const char* const simulate_help =
     "(--update rebuild). Takes --events, --until, --validate every|none,\n"
     "--update, --kernel, --epsilon, --no-filter, --list, --json\n"
     "(failures_by_event, changed_batches_by_event, batches, validations,\n"
-    "update_ms, nodes_rebuilt, batch_list).\n"
+    "update_ms, nodes_rebuilt, batch_list, recovery). In the floating-point\n"
+    "kernels a construction whose signs contradict each other is built again\n"
+    "at now, then at now + 2^i epsilon (recovery: failed_builds, rebuilds;\n"
+    "stopped: stuck when none succeeds).\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation or a floating-point run\n"
     "stuck at one instant, 2 on bad input.\n";

@@ -95,20 +95,14 @@ void Recorder::batch(const Kinetic::Batch& b) {
   }
 }
 
-std::string point_name(const segments::Site_point& p) {
-  if (p.kind == segments::Site_point::Kind::endpoint) return "s" + std::to_string(p.a / 2) + "." + std::to_string(p.a % 2);
-  return "s" + std::to_string(p.a) + "xs" + std::to_string(p.b);
-}
-
 Json entry_json(const Entry& e) {
-  static const char* const kinds[] = {"x_order", "side", "order_at"};
   const Key& k = e.key;
   Json points = Json::array(), segs = Json::array(), polys = Json::array();
   if (k.kind == Key::Kind::x_order) {
-    points.push_back(point_name(k.p));
-    points.push_back(point_name(k.q));
+    points.push_back(segments::point_name(k.p));
+    points.push_back(segments::point_name(k.q));
   } else {
-    points.push_back(point_name(k.p));
+    points.push_back(segments::point_name(k.p));
     segs.push_back(k.i);
     if (k.kind == Key::Kind::order_at) segs.push_back(k.j);
   }
@@ -117,7 +111,7 @@ Json entry_json(const Entry& e) {
     for (const auto& a : q) c.push_back(a.get_str());
     polys.push_back(c);
   }
-  return {{"kind", kinds[static_cast<int>(k.kind)]}, {"points", points}, {"segments", segs}, {"sign", e.sign},
+  return {{"kind", segments::kind_name(k.kind)}, {"points", points}, {"segments", segs}, {"sign", e.sign},
           {"polynomials", polys}};
 }
 

@@ -39,6 +39,11 @@ struct Segment_certify_options {
 // The exact run's event-order certificate, kvd-segment-event-order/1, written to o.out.
 int segment_certify(const Scene_args& sa, const std::string& text, const Segment_certify_options& o);
 
+// kvd diff: the exact run for `events` failures against the same run in
+// `kernel`, printed as kvd diff prints the KVD's (diff_report.hpp).
+int segment_diff(const Scene_args& sa, const std::string& text, const std::string& kernel, std::size_t events,
+                 const std::optional<mpq_class>& epsilon);
+
 // Scene_error naming the first segment with a number K's field cannot hold
 // (1e400 is infinite in double); the exact kernel holds all.
 template <class K>

@@ -51,6 +51,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
     failures += batches.back().failing.size();
     progress(batches.size(), failures);
   }
+  if (kin.stuck()) stopped = "stuck";
   std::array<std::size_t, 4> events{}, changed_by{};
   std::size_t changed = 0, simultaneous = 0;
   std::vector<double> ms, rebuilt;
@@ -67,7 +68,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
   const segments::Bsp_counts c = kin.tree().counts();
   const double mean = ms.empty() ? 0 : std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
   const double max = ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end());
-  const bool failed = !kin.validation_failures().empty();
+  const bool failed = !kin.validation_failures().empty() || kin.stuck();
   if (sa.json) {
     Json by_kind = Json::object(), changing = Json::object();
     for (std::size_t e = 0; e < 4; ++e) {
@@ -94,7 +95,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               {"update_ms", {{"mean", decimal(ms_text(mean))}, {"median", decimal(ms_text(median(ms)))},
                              {"max", decimal(ms_text(max))}}},
               {"update", o.update == segments::Segment_update::local ? "local" : "rebuild"},
-              {"nodes_rebuilt_median", median(rebuilt)}, {"filter", filter_json(k)}};
+              {"nodes_rebuilt_median", median(rebuilt)}, {"filter", filter_json(k)},
+              {"recovery", recovery_json(kin.recovery())}};
     if (o.list) j["batch_list"] = list;
     std::cout << json_line(j) << "\n";
   } else {
@@ -117,6 +119,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               << " certificates\nupdate (ms):   mean " << ms_text(mean) << ", median " << ms_text(median(ms))
               << ", max " << ms_text(max) << "\nnodes made:    median " << median(rebuilt) << " a batch ("
               << (o.update == segments::Segment_update::local ? "local" : "rebuild") << ")\n";
+    if (kin.recovery().detected()) std::cout << "recovery:      " << recovery_text(kin.recovery()) << "\n";
   }
   for (const auto& f : kin.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";
   return failed ? 1 : 0;

@@ -29,8 +29,11 @@
 
 namespace kvd::kinetic {
 
-struct Event_match {
-  Failure failure;
+// The comparison for any kind of failure F (a Certificate_key here, a
+// Segment_certificate_key for the segment BSP): ordered, as map keys.
+template <class F>
+struct Event_match_of {
+  F failure;
   std::size_t exact_batch = 0;
   std::optional<std::size_t> inexact_event;  // index in Differential::inexact; none: missed
   bool in_order = true;
@@ -39,16 +42,18 @@ struct Event_match {
   std::optional<mpq_class> relative_time_error;  // time_error / |t_exact|, when matched and t_exact != 0
 };
 
-struct Inexact_event {
-  Failure failure;
+template <class F>
+struct Inexact_event_of {
+  F failure;
   std::size_t batch = 0;
   std::string time;  // 17 significant digits (an exact time in full)
   std::optional<std::size_t> exact_event;  // none: spurious
 };
 
-struct Differential {
-  std::vector<Event_match> events;     // the exact run's events
-  std::vector<Inexact_event> inexact;  // the inexact run's events
+template <class F>
+struct Differential_of {
+  std::vector<Event_match_of<F>> events;     // the exact run's events
+  std::vector<Inexact_event_of<F>> inexact;  // the inexact run's events
   std::size_t order_mismatches = 0, missed_events = 0, spurious_events = 0, structure_mismatches = 0;
   // The first exact event at which the runs differ (missed, out of order,
   // another structure, or preceded by a spurious event); events.size() when
@@ -60,6 +65,23 @@ struct Differential {
   Recovery recovery;  // of the inexact run
   Stop inexact_stopped = Stop::exhausted;  // why the inexact run stopped
 };
+
+// A run as the comparison sees it: per batch its time, the failures in it
+// (in the run's order) and the structure of the tree just after it (equal
+// strings for equal structures).
+template <class F, class Time>
+struct Run_events {
+  struct Batch {
+    Time time;
+    std::vector<F> failing;
+    std::string structure;
+  };
+  std::vector<Batch> batches;
+};
+
+using Event_match = Event_match_of<Failure>;
+using Inexact_event = Inexact_event_of<Failure>;
+using Differential = Differential_of<Failure>;
 
 // The exact run the comparisons share, with its wall time.
 struct Exact_run {
@@ -81,5 +103,10 @@ Differential compare_with(const Exact_run& exact, const K& k, const scene::Scene
 // The comparison itself, for two records.
 template <class Time>
 Differential compare_runs(const Simulation<Exact_time>& exact, const Simulation<Time>& inexact);
+
+// The same for any kind of failure; the recovery, the stop and the seconds
+// are the caller's to fill.
+template <class F, class Time>
+Differential_of<F> compare_events(const Run_events<F, Exact_time>& exact, const Run_events<F, Time>& inexact);
 
 }  // namespace kvd::kinetic

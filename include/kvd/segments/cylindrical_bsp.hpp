@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,14 @@ public:
   std::vector<std::size_t> fragments(std::size_t s) const;
   // The same tree with its nodes numbered in pre-order, no unused slot.
   Cylindrical_bsp compacted() const;
+};
+
+// The signs a construction decided contradict each other: a point located
+// into the region its own cut bounds, or a crossing found below a node that
+// it does not reach from the root. A bug in the exact kernel; rounding in the
+// floating-point ones, which Kinetic_segment_bsp repairs.
+struct Bsp_contradiction : std::logic_error {
+  using std::logic_error::logic_error;
 };
 
 template <class K>

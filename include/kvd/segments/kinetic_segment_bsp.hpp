@@ -17,6 +17,13 @@
 // segment's endpoints, decided at no node) builds the tree again. This is not
 // yet the paper's constant-size surgery (LeftShave and the splits of
 // sections 3.1.1-3.1.4): its cost is the size of the replayed subtrees.
+//
+// Floating-point kernels only: rounding can make a construction's signs
+// contradict each other (Bsp_contradiction). The run then builds the whole
+// tree again at now, and failing that at now + 2^i epsilon, i = 1, ...,
+// kinetic::recovery_steps, the first that succeeds; the batches in between
+// are lost, which kvd diff reports as missed. When none succeeds the run
+// stops (stuck()). In the exact kernel a contradiction is a bug and is thrown.
 #pragma once
 
 #include <array>
@@ -28,6 +35,7 @@
 
 #include "kvd/detail/kinetic/root_cache.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
+#include "kvd/kinetic/simulation.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 
 namespace kvd::segments {
@@ -91,6 +99,12 @@ public:
   // build, described (empty when every one agreed), and how many ran.
   const std::vector<std::string>& validation_failures() const { return failures_; }
   std::size_t validations() const { return validations_; }
+  // Floating-point kernels: the contradictions met (failed_builds), the
+  // builds that repaired them (rebuilds) and those none did (unrepaired);
+  // all zero in the exact kernel.
+  const kinetic::Recovery& recovery() const { return recovery_; }
+  // Whether the run stopped at a contradiction no rebuild repaired.
+  bool stuck() const { return recovery_.unrepaired > 0; }
 
 private:
   using P = typename K::Poly;
@@ -114,6 +128,11 @@ private:
   // were decided; whether it changed, and the nodes made.
   bool update(std::vector<std::int32_t> nodes, std::size_t& made);
   void rebuild();
+  // Runs f (a construction or an update); in a floating-point kernel, a
+  // contradiction in it is repaired by building the tree again (see above).
+  // Whether the tree was built again.
+  template <class F>
+  bool guarded(F f);
   // Replays the subtree of v; whether its text changed.
   bool replay(std::size_t v, std::size_t& added);
   void forget(std::size_t node);
@@ -145,6 +164,7 @@ private:
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;
+  kinetic::Recovery recovery_;
 };
 
 }  // namespace kvd::segments

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -65,6 +66,13 @@ struct Segment_certificate_key {
   std::uint32_t i = 0, j = 0;   // side: the segment i; order_at: the lines of i and j
   friend auto operator<=>(const Segment_certificate_key&, const Segment_certificate_key&) = default;
 };
+
+// Names for printing only: "s3.0" (endpoint 0 of segment 3), "s1xs4" (a
+// crossing); a key's kind ("x_order", "side", "order_at") and its features
+// ("s3.0 s1xs4", "s3.0 s2", "s1xs4 s2 s5": the points, then the segments).
+std::string point_name(const Site_point& p);
+const char* kind_name(Segment_certificate_key::Kind k);
+std::string features(const Segment_certificate_key& k);
 
 // The kinds of critical events of seed 003, section 3.1.
 enum class Segment_event { vertex, edge, intersection, flip };
