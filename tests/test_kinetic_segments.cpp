@@ -131,6 +131,31 @@ TEMPLATE_TEST_CASE("a segment turning vertical: a flip event", "[segments][kinet
   CHECK(kin.validation_failures().empty());
 }
 
+// The walks go from endpoint 0 to endpoint 1 whichever is left, so a flip
+// changes only signs decided in the cells the turning segment cuts: the
+// local update replays those (section 3.1.4), not the whole tree. Here the
+// segment turning vertical at t = 0 comes last in the priority order, beside
+// three static segments, one of them crossing it.
+TEST_CASE("a flip replays only the cells of the turning segment", "[segments][kinetic]") {
+  const auto s = scene_of({fixed(10, 0, 12, 1), fixed(14, 2, 16, 3), fixed(-3, 1, 3, 1),
+                           moving(linear(0, -1), linear(-2, 0), linear(0, 1), linear(2, 0))},
+                          {0, 1, 2, 3}, -1, 1);
+  const Exact_kernel k;
+  Kinetic_segment_bsp<Exact_kernel> local(k, s, true), rebuild(k, s, true, Segment_update::rebuild);
+  const auto l = run(local, 10), r = run(rebuild, 10);
+  REQUIRE(l.size() == 1);
+  REQUIRE(r.size() == 1);
+  CHECK(l[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  CHECK(l[0].changed);
+  CHECK(local.tree().text() == rebuild.tree().text());
+  CHECK(local.certificate_list() == rebuild.certificate_list());
+  const std::size_t nodes = local.tree().counts().nodes;
+  CHECK(r[0].nodes_rebuilt == nodes);
+  CHECK(l[0].nodes_rebuilt > 0);
+  CHECK(l[0].nodes_rebuilt < nodes / 2);
+  CHECK(local.validation_failures().empty());
+}
+
 // Random scenes of small integers: segments start degenerate (shared
 // x-coordinates, collinear overlaps) and meet degenerate configurations on
 // the way (simultaneous events at the same rational times).
@@ -230,4 +255,28 @@ TEMPLATE_TEST_CASE("generated segment scenes: every kernel runs the exact events
     CHECK(exact.tree().text() == fp.tree().text());
     CHECK(fp.validation_failures().empty());
   }
+}
+
+// Rotating segments (certificates up to degree 10): double misses sign
+// changes, and validation finds the tree in force stale. The run adopts the
+// fresh build there, as the KVD's does, and goes on to end where the exact
+// run ends, in its tree.
+TEST_CASE("a double run adopts a fresh build where validation finds its tree stale", "[segments][kinetic][float]") {
+  Segment_generator_options o;
+  o.family = Segment_family::rotating;
+  o.n = 10;
+  o.seed = 1;
+  o.end = 2;
+  const Segment_scene s = generate_segments(o);
+  Kinetic_segment_bsp<Exact_kernel> exact(Exact_kernel(), s, false);
+  Kinetic_segment_bsp<Double_kernel> fp(Double_kernel(), s, true);
+  run(exact, 1000);
+  run(fp, 1000);
+  const auto& r = fp.recovery();
+  CHECK(r.stale_trees >= 1);
+  CHECK(r.rebuilds == r.stale_trees + r.failed_builds);
+  CHECK(fp.validation_failures().size() == r.stale_trees);
+  CHECK_FALSE(fp.stuck());
+  CHECK(exact.tree().text() == fp.tree().text());
+  CHECK(exact.recovery().detected() == 0);
 }

@@ -91,7 +91,7 @@ TEST_CASE("segment differential: MPFR agrees on a rotating scene; double diverge
   CHECK(m.max_relative_time_error < mpq_class(1, 1) / (mpz_class(1) << 200));
   CHECK(m.max_time_error > 0);  // the times are irrational: rounding shows
   // In double the events stay matched and in order, but rounding puts
-  // another tree after some of them (the first at event 46 on x86-64).
+  // another tree after some of them.
   const auto d = segments::compare_with(exact, Double_kernel(), s);
   CHECK(d.missed_events == 0);
   CHECK(d.structure_mismatches > 0);

@@ -29,10 +29,14 @@ void Bsp_builder<K>::insert(std::uint32_t i) {
     const Site_point q = Site_point::endpoint(e);
     split(locate(0, {Arrival::Kind::vertex, i, q, {}, 0}), Cut_kind::vertex, q);
   }
-  p_.at_node(-1);  // which endpoint is left is no node's decision
-  const Site_point lo = Site_point::endpoint(p_.left_endpoint(i, t_)), hi = Site_point::endpoint(p_.right_endpoint(i, t_));
-  insert_crossings(0, i, lo, hi, {});
-  walk(0, {Arrival::Kind::edges, i, lo, hi, 0}, [&](std::size_t leaf) { split_edge(leaf, i); }, [](std::uint32_t) {});
+  // The paper's flip certificate: the x order of the segment's endpoints.
+  // The construction does not branch on it (the walks go from endpoint 0 to
+  // endpoint 1, whichever is left), so it is decided at no node.
+  const Site_point from = Site_point::endpoint(2 * std::size_t(i)), to = Site_point::endpoint(2 * std::size_t(i) + 1);
+  p_.at_node(-1);
+  p_.compare_x(from, to, t_);
+  insert_crossings(0, i, from, to, {});
+  walk(0, {Arrival::Kind::edges, i, from, to, 0}, [&](std::size_t leaf) { split_edge(leaf, i); }, [](std::uint32_t) {});
 }
 
 template <class K>
@@ -149,13 +153,13 @@ std::size_t Bsp_builder<K>::step(std::size_t n, const Arrival& a) const {
   return static_cast<std::size_t>(node.child[s > 0]);
 }
 
-// Phase 2 for segment i from node `from`: its crossings with the earlier
+// Phase 2 for segment i from node `node`: its crossings with the earlier
 // segments found there, each cut above and below, and the cuts `kept` (of
-// crossings found above `from`), in priority order of the other segment.
+// crossings found above `node`), in priority order of the other segment.
 template <class K>
-void Bsp_builder<K>::insert_crossings(std::size_t from, std::uint32_t i, const Site_point& lo, const Site_point& hi,
+void Bsp_builder<K>::insert_crossings(std::size_t node, std::uint32_t i, const Site_point& from, const Site_point& to,
                                       std::vector<Arrival> kept) {
-  walk(from, {Arrival::Kind::crossings, i, lo, hi, 0}, [](std::size_t) {}, [&](std::uint32_t j) {
+  walk(node, {Arrival::Kind::crossings, i, from, to, 0}, [](std::size_t) {}, [&](std::uint32_t j) {
     for (const std::int8_t dir : {std::int8_t(1), std::int8_t(-1)})
       kept.push_back({Arrival::Kind::intersection, i, Site_point::crossing(i, j), {}, dir});
   });
@@ -165,11 +169,11 @@ void Bsp_builder<K>::insert_crossings(std::size_t from, std::uint32_t i, const S
     return rank[other(x)] != rank[other(y)] ? rank[other(x)] < rank[other(y)] : x.dir > y.dir;
   });
   for (const Arrival& c : kept) {
-    // A crossing found below `from` is located from the root by the whole
-    // construction: its signs above `from` are certificates too.
-    const bool found_here = c.a != lo && c.a != hi;
-    if (found_here && from != 0) trace(from, c);
-    split(locate(from, c), Cut_kind::intersection, c.a);
+    // A crossing found below `node` is located from the root by the whole
+    // construction: its signs above `node` are certificates too.
+    const bool found_here = c.a != from && c.a != to;
+    if (found_here && node != 0) trace(node, c);
+    split(locate(node, c), Cut_kind::intersection, c.a);
   }
 }
 
@@ -187,7 +191,7 @@ void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
   }
 }
 
-// Visits the part (a.a, a.b) in x of segment a.segment down the subtree of
+// Visits the part from a.a to a.b of segment a.segment down the subtree of
 // n: `leaf(n)` at every leaf whose cell it meets, `crossing(j)` at every edge
 // cut of an earlier segment j that it crosses inside the cut's cell.
 template <class K>
@@ -197,35 +201,36 @@ void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Cros
   const Bsp_node node = b_.nodes[n];  // a copy: `leaf` adds nodes
   const auto left = static_cast<std::size_t>(node.child[0]), right = static_cast<std::size_t>(node.child[1]);
   const std::uint32_t i = a.segment;
-  const Site_point lo = a.a, hi = a.b;
+  const Site_point from = a.a, to = a.b;
+  // The sides of the part's two ends; where they differ, the part splits at
+  // x: the piece (from, x) goes to from's side and (x, to) to to's side, the
+  // piece below or left walked first. Each end is compared on its own, never
+  // one end with the other: the walk is the same whichever end is left, so a
+  // segment turning vertical changes no decision above its own cuts.
+  const auto go = [&](int at_from, int at_to, const Site_point& x) {
+    if (at_from == 0) at_from = at_to;
+    if (at_to == 0) at_to = at_from;
+    if (at_from == at_to) return walk(at_from > 0 ? right : left, a, leaf, crossing);
+    Arrival first = a, second = a;
+    first.b = x;
+    second.a = x;
+    if (at_from > 0) std::swap(first, second);
+    walk(left, first, leaf, crossing);
+    walk(right, second, leaf, crossing);
+  };
   switch (node.kind) {
     case Cut_kind::leaf: leaf(n); return;
     case Cut_kind::vertex:
     case Cut_kind::intersection: {
       const Site_point& c = node.point;
-      if (c == lo || p_.compare_x(c, lo, t_).sign < 0) return walk(right, a, leaf, crossing);
-      if (c == hi || p_.compare_x(c, hi, t_).sign > 0) return walk(left, a, leaf, crossing);
-      a.b = c;
-      walk(left, a, leaf, crossing);
-      a.a = c;
-      a.b = hi;
-      walk(right, a, leaf, crossing);
-      return;
+      const auto at = [&](const Site_point& q) { return q == c ? 0 : p_.compare_x(q, c, t_).sign; };
+      return go(at(from), at(to), c);
     }
     case Cut_kind::edge: {
       const std::uint32_t j = node.segment;
-      int at_lo = p_.order_at(lo, i, j, t_).sign, at_hi = p_.order_at(hi, i, j, t_).sign;
-      if (at_lo == 0) at_lo = at_hi;
-      if (at_hi == 0) at_hi = at_lo;
-      if (at_lo == at_hi) return walk(at_lo > 0 ? right : left, a, leaf, crossing);
-      crossing(j);
-      const Site_point x = Site_point::crossing(i, j);
-      a.b = x;
-      walk(at_lo > 0 ? right : left, a, leaf, crossing);
-      a.a = x;
-      a.b = hi;
-      walk(at_hi > 0 ? right : left, a, leaf, crossing);
-      return;
+      const int at_from = p_.order_at(from, i, j, t_).sign, at_to = p_.order_at(to, i, j, t_).sign;
+      if (at_from != 0 && at_to != 0 && at_from != at_to) crossing(j);
+      return go(at_from, at_to, Site_point::crossing(i, j));
     }
   }
 }

@@ -116,6 +116,21 @@ bool Segment_predicates<K>::vanishes(const P& f) const {
                      [&](const auto& c) { return k_->sign(c) == 0; });
 }
 
+std::vector<std::size_t> named_segments(const Segment_certificate_key& k) {
+  using Kind = Segment_certificate_key::Kind;
+  std::vector<std::size_t> out;
+  const auto add = [&](const Site_point& p) {
+    if (p.kind == Site_point::Kind::endpoint) return out.push_back(p.a / 2);
+    out.push_back(p.a);
+    out.push_back(p.b);
+  };
+  add(k.p);
+  if (k.kind == Kind::x_order) add(k.q);
+  else out.push_back(k.i);
+  if (k.kind == Kind::order_at) out.push_back(k.j);
+  return out;
+}
+
 std::string point_name(const Site_point& p) {
   if (p.kind == Site_point::Kind::endpoint) return "s" + std::to_string(p.a / 2) + "." + std::to_string(p.a % 2);
   return "s" + std::to_string(p.a) + "xs" + std::to_string(p.b);

@@ -83,7 +83,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
           if (b.events[e]) kinds[segments::segment_event_names[e]] = b.events[e];
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
                         {"failing", b.failing.size()}, {"events", kinds}, {"changed", b.changed},
-                        {"certificates", b.certificates}});
+                        {"certificates", b.certificates}, {"nodes_rebuilt", b.nodes_rebuilt}});
       }
     Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
               {"failures", failures}, {"simultaneous_batches", simultaneous}, {"changed_batches", changed},

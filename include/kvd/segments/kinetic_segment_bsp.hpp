@@ -13,10 +13,13 @@
 // The local update replays, in the subtree of each topmost node where a
 // failing certificate was decided, the insertion steps that reached it
 // (kvd/detail/segments/bsp_builder.hpp; proofs/segment-local-update.md): the
-// rest of the tree, and its certificates, stay. A flip (the x order of a
-// segment's endpoints, decided at no node) builds the tree again. This is not
-// yet the paper's constant-size surgery (LeftShave and the splits of
-// sections 3.1.1-3.1.4): its cost is the size of the replayed subtrees.
+// rest of the tree, and its certificates, stay. A flip is local too: the
+// construction walks each segment from endpoint 0 to endpoint 1 whichever is
+// left, so the signs a flip changes are all decided in the cells of the
+// segment's own cuts, and the replay is the paper's (section 3.1.4) update of
+// the subtrees of the cells it crosses, not O(1). This is not yet the paper's
+// constant-size surgery (LeftShave and the splits of sections 3.1.1-3.1.4):
+// its cost is the size of the replayed subtrees.
 //
 // Floating-point kernels only: rounding can make a construction's signs
 // contradict each other (Bsp_contradiction). The run then builds the whole
@@ -24,12 +27,15 @@
 // kinetic::recovery_steps, the first that succeeds; the batches in between
 // are lost, which kvd diff reports as missed. When none succeeds the run
 // stops (stuck()). In the exact kernel a contradiction is a bug and is thrown.
+// With validation, a floating-point run whose tree is stale (an event
+// missed) adopts the fresh build and its instant, as the KVD's does.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -85,6 +91,9 @@ public:
   // scene's span; none when nothing fails there.
   std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
+  // (A floating-point run with validation may first adopt a fresh build; when
+  // nothing fails after it, the batch returned is that adoption, with no
+  // failures.)
   Batch advance();
   // Processes every batch at a time <= t, then moves now to t (if later).
   std::vector<Batch> advance_to(const Time& t);
@@ -100,8 +109,9 @@ public:
   const std::vector<std::string>& validation_failures() const { return failures_; }
   std::size_t validations() const { return validations_; }
   // Floating-point kernels: the contradictions met (failed_builds), the
-  // builds that repaired them (rebuilds) and those none did (unrepaired);
-  // all zero in the exact kernel.
+  // stale trees validation found (stale_trees), the builds that repaired
+  // them (rebuilds) and the contradictions none did (unrepaired); all zero
+  // in the exact kernel.
   const kinetic::Recovery& recovery() const { return recovery_; }
   // Whether the run stopped at a contradiction no rebuild repaired.
   bool stuck() const { return recovery_.unrepaired > 0; }
@@ -121,13 +131,20 @@ private:
   };
 
   void record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node, int sign);
+  void index(const Segment_certificate_key& key);
   typename Segment_predicates<K>::Recorder recorder();
   // Queues the certificate's next failure after now, within the span.
   void schedule(const Segment_certificate_key& key, Certificate& c);
   // The tree just after now, given the nodes where the signs that changed
-  // were decided; whether it changed, and the nodes made.
-  bool update(std::vector<std::int32_t> nodes, std::size_t& made);
+  // were decided, and those of them decided at no node (flip certificates,
+  // decided again); whether it changed, and the nodes made.
+  bool update(std::vector<std::int32_t> nodes, const std::vector<Segment_certificate_key>& unplaced,
+              std::size_t& made);
   void rebuild();
+  // Compares the tree in force with a fresh build strictly between now and
+  // t. Floating-point kernels: a stale tree is replaced by the fresh build,
+  // and now moves to its instant; whether that happened.
+  bool validate(const Time& t);
   // Runs f (a construction or an update); in a floating-point kernel, a
   // contradiction in it is repaired by building the tree again (see above).
   // Whether the tree was built again.
@@ -159,6 +176,9 @@ private:
   // Where the certificates naming a crossing were decided: when a replay
   // finds a crossing no longer, its certificates above the replayed subtree go.
   std::map<Site_point, std::vector<std::pair<Segment_certificate_key, std::int32_t>>> by_crossing_;
+  // The certificate keys naming each segment, for set_motion (see index()).
+  std::vector<std::set<Segment_certificate_key>> by_segment_;
+  std::size_t indexed_ = 0;  // keys added to by_segment_ since it was last made
   std::vector<Entry> queue_;                                     // a min-heap on time
   std::uint64_t versions_ = 0;
   kinetic::Root_cache<K> roots_;

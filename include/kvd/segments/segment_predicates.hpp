@@ -67,6 +67,10 @@ struct Segment_certificate_key {
   friend auto operator<=>(const Segment_certificate_key&, const Segment_certificate_key&) = default;
 };
 
+// The segments a certificate names (its points' segments, and i and j), with
+// repeats; at most five.
+std::vector<std::size_t> named_segments(const Segment_certificate_key& k);
+
 // Names for printing only: "s3.0" (endpoint 0 of segment 3), "s1xs4" (a
 // crossing); a key's kind ("x_order", "side", "order_at") and its features
 // ("s3.0 s1xs4", "s3.0 s2", "s1xs4 s2 s5": the points, then the segments).

@@ -2,7 +2,7 @@
 // as steps that a kinetic run can replay in one subtree.
 //
 // Every step of an insertion reaches a chain of nodes from the root: a point
-// located for a vertex or an intersection cut, a part (lo, hi) of a segment
+// located for a vertex or an intersection cut, a part (from, to) of a segment
 // walked down for its crossings or its edge cuts. With a log, each node keeps
 // the arrivals that reached it, in build order. Whatever the later segments
 // do, the arrivals at a node depend only on the decisions of its ancestors;
@@ -22,7 +22,7 @@ struct Arrival {
   enum class Kind : std::uint8_t { vertex, crossings, intersection, edges };
   Kind kind = Kind::vertex;
   std::uint32_t segment = 0;
-  Site_point a, b;  // vertex: the endpoint; intersection: the crossing; walks: the part (a, b) in x
+  Site_point a, b;  // vertex: the endpoint; intersection: the crossing; walks: the part from a to b (endpoint 0's way first)
   std::int8_t dir = 0;  // intersection: +1 the leaf above the crossing, -1 below
 };
 
@@ -58,7 +58,7 @@ private:
   std::size_t locate(std::size_t from, const Arrival& a);
   std::size_t step(std::size_t n, const Arrival& a) const;
   void trace(std::size_t to, const Arrival& a);
-  void insert_crossings(std::size_t from, std::uint32_t i, const Site_point& lo, const Site_point& hi,
+  void insert_crossings(std::size_t node, std::uint32_t i, const Site_point& from, const Site_point& to,
                         std::vector<Arrival> kept);
   template <class Leaf, class Crossing>
   void walk(std::size_t n, Arrival a, const Leaf& leaf, const Crossing& crossing);
