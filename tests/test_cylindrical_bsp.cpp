@@ -9,6 +9,8 @@
 #include "kvd/detail/scene/priority.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
+#include "kvd/segments/segment_generators.hpp"
 
 using namespace kvd;
 using namespace kvd::segments;
@@ -179,4 +181,41 @@ TEMPLATE_TEST_CASE("random segment scenes: every kernel builds the exact tree", 
     const std::string expected = build_cylindrical_bsp(Segment_predicates<Exact_kernel>(exact, s), exact.time(0)).text();
     CHECK(build_cylindrical_bsp(Segment_predicates<TestType>(k, s), k.time(0)).text() == expected);
   }
+}
+
+// The exact kernel's interval filter decides a sign only when its interval
+// excludes zero: with and without it, the same tree and the same rules, on
+// degenerate scenes (where it must leave zeros and perturbations alone), on
+// rotating ones at rational instants and at the algebraic instants of their
+// events (where signs are zero or near it).
+TEST_CASE("the segment predicates' interval filter changes no tree", "[segments][bsp][filter]") {
+  const auto same = [](const Segment_scene& s, const Exact_time& t) {
+    const Exact_kernel on(true), off(false);
+    const Segment_predicates<Exact_kernel> a(on, s), b(off, s);
+    CHECK(build_cylindrical_bsp(a, t).text() == build_cylindrical_bsp(b, t).text());
+    CHECK(a.counts().value == b.counts().value);
+    CHECK(a.counts().after == b.counts().after);
+    CHECK(a.counts().perturbation == b.counts().perturbation);
+    CHECK(b.counts().filtered == 0);
+    return a.counts().filtered;
+  };
+  long filtered = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) filtered += same(random_scene(seed, 12, 20), Exact_time(mpq_class(0)));
+  Segment_generator_options o;
+  o.family = Segment_family::rotating;
+  o.n = 12;
+  o.seed = 3;
+  o.end = 2;
+  const Segment_scene s = generate_segments(o);
+  for (const mpq_class& t : {mpq_class(0), mpq_class(1, 3), mpq_class(5, 4)}) filtered += same(s, Exact_time(t));
+  Kinetic_segment_bsp<Exact_kernel> kin(Exact_kernel(), s, false);
+  std::size_t algebraic = 0;
+  for (int n = 0; n < 12 && kin.next_event_time(); ++n) {
+    const Exact_time t = kin.advance().time;
+    algebraic += !t.is_rational();
+    INFO("t = " << t.to_string());
+    filtered += same(s, t);
+  }
+  CHECK(algebraic > 0);
+  CHECK(filtered > 1000);
 }

@@ -3,70 +3,17 @@
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/segments/segment_factors.hpp"
+#include "segment_filter.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::segments {
 
-namespace {
-
-template <class R>
-using H = std::array<R, 3>;
-
-// The join of two points (a line) or the meet of two lines (a point).
-template <class R>
-H<R> wedge(const H<R>& a, const H<R>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-template <class R>
-R dot(const H<R>& a, const H<R>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-// The endpoints over one ring, with the lines and crossings made from them,
-// kept when `cache` is set (the unperturbed ring: a construction asks for the
-// same lines and crossings many times).
-template <class R>
-class View {
-public:
-  View(const std::vector<H<R>>& e, Geometry_cache<R>* cache) : e_(e), cache_(cache) {}
-
-  const H<R>& endpoint(std::size_t k) const { return e_[k]; }
-  H<R> line(std::size_t s) const {
-    if (!cache_) return wedge(e_[2 * s], e_[2 * s + 1]);
-    auto& l = cache_->lines[s];
-    if (!l) l = wedge(e_[2 * s], e_[2 * s + 1]);
-    return *l;
-  }
-  H<R> point(const Site_point& p) const {
-    if (p.kind == Site_point::Kind::endpoint) return e_[p.a];
-    if (!cache_) return wedge(line(p.a), line(p.b));
-    const std::uint64_t key = (std::uint64_t(p.a) << 32) | p.b;
-    auto it = cache_->crossings.find(key);
-    if (it == cache_->crossings.end()) it = cache_->crossings.emplace(key, wedge(line(p.a), line(p.b))).first;
-    return it->second;
-  }
-  // x(P1) - x(P0) of segment s, times W0 W1 > 0.
-  R dx(std::size_t s) const { return e_[2 * s + 1][0] * e_[2 * s][2] - e_[2 * s][0] * e_[2 * s + 1][2]; }
-
-  // The factors of side(q, s) for a point q given by coordinates:
-  // det[P0; P1; q] is the orientation of (P0, P1, q) times W0 W1 W_q, and
-  // "left of P0 -> P1" is "above" when x(P0) < x(P1).
-  std::vector<R> side_factors(const H<R>& q, std::size_t s, bool q_is_endpoint) const {
-    std::vector<R> f{dot(line(s), q), dx(s)};
-    if (!q_is_endpoint) f.push_back(q[2]);
-    return f;
-  }
-
-private:
-  const std::vector<H<R>>& e_;
-  Geometry_cache<R>* cache_;
-};
-
-}  // namespace
+using detail::View;
 
 long perturbation_lambda(std::size_t e, std::size_t n) {
   long p = std::max<long>(2, static_cast<long>(n));
@@ -86,6 +33,8 @@ Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s)
     : k_(&k), s_(&s), endpoints_(s.endpoint_count()), perturbed_(s.endpoint_count()) {
   for (std::size_t e = 0; e < s.endpoint_count(); ++e) load(e, sgn(s.endpoint(e)[2](s.start)));
   cache_.lines.resize(s.segments.size());
+  if constexpr (std::is_same_v<K, Exact_kernel>)
+    if (k.filtered()) filter_ = std::make_shared<detail::Segment_filter>(endpoints_);
 }
 
 // Endpoint e from the scene, negated when its W has the sign `w` < 0.
@@ -100,6 +49,8 @@ void Segment_predicates<K>::load(std::size_t e, int w) {
   perturbed_[e] = {Poly<P>(std::vector<P>{p[0], p[2] * gx}), Poly<P>(std::vector<P>{p[1], p[2] * gy}),
                    Poly<P>(std::vector<P>{p[2]})};
   endpoints_[e] = std::move(p);
+  if constexpr (std::is_same_v<K, Exact_kernel>)
+    if (filter_) filter_->refresh(e, endpoints_[e]);
 }
 
 template <class K>
@@ -167,10 +118,18 @@ Segment_event event_of(const Segment_certificate_key& k, const std::vector<std::
 }
 
 template <class K>
-template <class F>
-Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const F& factors,
-                                           const Time& t) const {
-  const std::vector<P> v = factors(View<P>(endpoints_, &cache_));
+Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const Time& t) const {
+  if constexpr (std::is_same_v<K, Exact_kernel>) {
+    // Without a recorder no polynomial is needed: a sign the interval filter
+    // certifies is the value's sign (rule 2).
+    if (filter_ && !recorder_)
+      if (const int s = filter_->sign(key, t)) {
+        ++counts_.value;
+        ++counts_.filtered;
+        return {s, Segment_rule::value};
+      }
+  }
+  const std::vector<P> v = detail::factors_of(key, View<P>(endpoints_, &cache_));
   std::optional<std::vector<Poly<P>>> expanded;
   std::vector<P> deciding;
   int sign = 1;
@@ -186,7 +145,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
       if (recorder_ && v[f].degree() > 0) deciding.push_back(v[f]);
       continue;
     }
-    if (!expanded) expanded = factors(View<Poly<P>>(perturbed_, nullptr));
+    if (!expanded) expanded = detail::factors_of(key, View<Poly<P>>(perturbed_, nullptr));
     int s = 0;
     for (const P& c : (*expanded)[f].coefficients()) {
       if (vanishes(c)) continue;
@@ -216,16 +175,7 @@ Segment_sign Segment_predicates<K>::compare_x(const Site_point& a, const Site_po
     const Segment_sign r = compare_x(b, a, t);
     return {-r.sign, r.rule};
   }
-  return decide(
-      {Segment_certificate_key::Kind::x_order, a, b, 0, 0},
-      [&](const auto& e) {
-        const auto pa = e.point(a), pb = e.point(b);
-        std::vector<std::decay_t<decltype(pa[0])>> f{pa[0] * pb[2] - pb[0] * pa[2]};
-        if (a.kind == Site_point::Kind::crossing) f.push_back(pa[2]);
-        if (b.kind == Site_point::Kind::crossing) f.push_back(pb[2]);
-        return f;
-      },
-      t);
+  return decide({Segment_certificate_key::Kind::x_order, a, b, 0, 0}, t);
 }
 
 template <class K>
@@ -234,8 +184,7 @@ Segment_sign Segment_predicates<K>::side(const Site_point& p, std::size_t s, con
     ++counts_.identity;
     return {0, Segment_rule::identity};
   }
-  return decide({Segment_certificate_key::Kind::side, p, {}, static_cast<std::uint32_t>(s), 0},
-                [&](const auto& e) { return e.side_factors(e.point(p), s, p.kind == Site_point::Kind::endpoint); }, t);
+  return decide({Segment_certificate_key::Kind::side, p, {}, static_cast<std::uint32_t>(s), 0}, t);
 }
 
 template <class K>
@@ -245,16 +194,8 @@ Segment_sign Segment_predicates<K>::order_at(const Site_point& p, std::size_t i,
     const Segment_sign r = side(p, i, t);
     return {-r.sign, r.rule};
   }
-  // The point of the line of i above or below p, then its side of j.
   return decide(
-      {Segment_certificate_key::Kind::order_at, p, {}, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)},
-      [&](const auto& e) {
-        const auto q = e.point(p);
-        using R = std::decay_t<decltype(q[0])>;
-        const H<R> vertical{q[2], R(), -q[0]};
-        return e.side_factors(wedge(e.line(i), vertical), j, false);
-      },
-      t);
+      {Segment_certificate_key::Kind::order_at, p, {}, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)}, t);
 }
 
 template <class K>

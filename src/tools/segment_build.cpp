@@ -31,7 +31,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
                             {"intersection_cuts", c.intersection_cuts}, {"edge_cuts", c.edge_cuts},
                             {"nodes", c.nodes}, {"leaves", c.leaves}, {"height", c.height},
                             {"signs", {{"identity", r.identity}, {"value", r.value}, {"after", r.after},
-                                       {"perturbation", r.perturbation}}},
+                                       {"perturbation", r.perturbation}, {"value_by_filter", r.filtered}}},
                             {"seconds", decimal(secs)}, {"filter", filter_json(k)}})
               << "\n";
     return 0;
@@ -41,7 +41,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
             << "\nvertex cuts:       " << c.vertex_cuts << "\nintersection cuts: " << c.intersection_cuts
             << "\nedge cuts:         " << c.edge_cuts << "\nnodes:             " << c.nodes
             << "\nleaves:            " << c.leaves << "\nheight:            " << c.height
-            << "\nsigns:             " << r.value << " by value, " << r.after << " just after, " << r.perturbation
+            << "\nsigns:             " << r.value << " by value (" << r.filtered << " of them by the interval filter), "
+            << r.after << " just after, " << r.perturbation
             << " by the perturbation, " << r.identity << " by identity"
             << "\nseconds:           " << secs << "\n";
   return 0;

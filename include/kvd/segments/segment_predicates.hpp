@@ -6,7 +6,9 @@
 //  1. identity: the point lies on the segment by construction (an endpoint of
 //     it, or a crossing it defines), or two points are the same point: 0,
 //     without arithmetic;
-//  2. the sign at t of the value, a polynomial in t;
+//  2. the sign at t of the value, a polynomial in t (in the exact kernel,
+//     when no recorder wants the polynomials, first by a certified interval
+//     filter that decides only when zero is excluded);
 //  3. if that is zero, the sign just after t (kernel sign_after);
 //  4. if the value is identically zero in t, the symbolic perturbation:
 //     endpoint e moved by ε (λ_e, λ_e^2) (on the parabola), ε -> 0+ after
@@ -24,6 +26,7 @@
 #include <compare>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -32,6 +35,10 @@
 #include "kvd/segments/segment_scene.hpp"
 
 namespace kvd::segments {
+
+namespace detail {
+class Segment_filter;  // src/segments/segment_filter.hpp
+}
 
 // A point of the arrangement that a cut passes through: an endpoint, or the
 // crossing of two segments (a < b).
@@ -96,6 +103,7 @@ struct Segment_sign {
 
 struct Segment_rule_counts {
   long identity = 0, value = 0, after = 0, perturbation = 0;
+  long filtered = 0;  // of `value`, decided by the exact kernel's interval filter
 };
 
 // The lines of the segments and the crossings of two, made once.
@@ -152,10 +160,10 @@ public:
   void refresh(std::size_t segment, const Time& at);
 
 private:
-  // The single entry point: the sign of the product of the factors that
-  // `factors(endpoints)` computes over either ring, each decided by rules 2-4.
-  template <class F>
-  Segment_sign decide(const Segment_certificate_key& key, const F& factors, const Time& t) const;
+  // The single entry point: the sign of the product of the key's factors
+  // (detail/segments/segment_factors.hpp), each decided by rules 2-4; in the
+  // exact kernel without a recorder, first by the interval filter.
+  Segment_sign decide(const Segment_certificate_key& key, const Time& t) const;
   bool vanishes(const P& f) const;
   void load(std::size_t e, int w);
 
@@ -167,6 +175,7 @@ private:
   mutable Segment_rule_counts counts_;
   mutable Recorder recorder_;
   mutable std::int32_t node_ = -1;
+  std::shared_ptr<detail::Segment_filter> filter_;  // the exact kernel's, unless built without
 };
 
 }  // namespace kvd::segments
