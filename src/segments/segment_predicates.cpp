@@ -199,14 +199,6 @@ Segment_sign Segment_predicates<K>::order_at(const Site_point& p, std::size_t i,
 }
 
 template <class K>
-bool Segment_predicates<K>::cross(std::size_t i, std::size_t j, const Time& t) const {
-  const auto straddles = [&](std::size_t a, std::size_t b) {
-    return side(Site_point::endpoint(2 * b), a, t).sign * side(Site_point::endpoint(2 * b + 1), a, t).sign < 0;
-  };
-  return straddles(i, j) && straddles(j, i);
-}
-
-template <class K>
 std::size_t Segment_predicates<K>::left_endpoint(std::size_t s, const Time& t) const {
   return compare_x(Site_point::endpoint(2 * s), Site_point::endpoint(2 * s + 1), t).sign < 0 ? 2 * s : 2 * s + 1;
 }
