@@ -596,6 +596,15 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
   const Run kernel = run("diff " + scene + " --kernel bogus", "2>&1");
   CHECK(kernel.status == 2);
   CHECK(kernel.out.find("unknown kernel 'bogus'") != std::string::npos);
+  // The viewer shows triangle scenes: a segment scene, or the diff of one, is refused.
+  const std::string page = std::string(KVD_BINARY_DIR) + "/segments-view.html";
+  std::remove(page.c_str());
+  const std::string report = std::string(KVD_BINARY_DIR) + "/segments-diff.json";
+  REQUIRE(run("diff " + scene + " --kernel double --json > " + report).status == 0);
+  for (const std::string& input : {scene, report}) {
+    CHECK(run("view " + input + " --out " + page, "2>&1").status == 2);
+    CHECK(!std::ifstream(page).good());
+  }
   const Run flag = run("diff " + scene + " --kernel double --allow-intersecting", "2>&1");
   CHECK(flag.status == 2);
   CHECK(flag.out.find("--allow-intersecting: only for triangle scenes") != std::string::npos);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "kvd/segments/segment_io.hpp"
 #include "page_data.hpp"
 
 namespace kvd::cli {
@@ -157,7 +158,12 @@ int view(Args& args) {
     listed = trace;
   }
   if (listed) o.max_events = listed->size();
-  const scene::Scene s = sa.load_scene("view");
+  const std::string scene_text = sa.read_text("view");
+  if (segments::scene_format(scene_text) == "kvd-segments/1")
+    throw Usage_error("kvd view: " + *sa.path +
+                      ": a segment scene (kvd-segments/1); the viewer shows triangle scenes: draw segments with kvd "
+                      "render or film them with kvd animate");
+  const scene::Scene s = sa.read_scene("view", scene_text);
   if (o.until) require_in_span("view", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd view");
   const view::Recorded_run run = with_disjoint_triangles("view", *sa.path, [&] { return view::record_run(s, o); });
