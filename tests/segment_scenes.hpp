@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "kvd/segments/segment_generators.hpp"
 #include "kvd/segments/segment_scene.hpp"
 
 namespace kvd::test {
@@ -37,6 +38,18 @@ inline segments::Segment_scene scene_of(std::vector<segments::Segment> segs, std
   if (end) s.end = mpq_class(*end);
   s.derive();
   return s;
+}
+
+// A generated scene of the family over [0, end], the generator's other
+// options at their defaults.
+inline segments::Segment_scene generated(segments::Segment_family family, std::size_t n, std::uint64_t seed,
+                                         long end) {
+  segments::Segment_generator_options o;
+  o.family = family;
+  o.n = n;
+  o.seed = seed;
+  o.end = end;
+  return segments::generate_segments(o);
 }
 
 }  // namespace kvd::test

@@ -10,7 +10,6 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
-#include "kvd/segments/segment_generators.hpp"
 
 using namespace kvd;
 using namespace kvd::segments;
@@ -201,12 +200,7 @@ TEST_CASE("the segment predicates' interval filter changes no tree", "[segments]
   };
   long filtered = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) filtered += same(random_scene(seed, 12, 20), Exact_time(mpq_class(0)));
-  Segment_generator_options o;
-  o.family = Segment_family::rotating;
-  o.n = 12;
-  o.seed = 3;
-  o.end = 2;
-  const Segment_scene s = generate_segments(o);
+  const Segment_scene s = kvd::test::generated(Segment_family::rotating, 12, 3, 2);
   for (const mpq_class& t : {mpq_class(0), mpq_class(1, 3), mpq_class(5, 4)}) filtered += same(s, Exact_time(t));
   Kinetic_segment_bsp<Exact_kernel> kin(Exact_kernel(), s, false);
   std::size_t algebraic = 0;

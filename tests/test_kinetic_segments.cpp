@@ -262,12 +262,7 @@ TEMPLATE_TEST_CASE("generated segment scenes: every kernel runs the exact events
 // fresh build there, as the KVD's does, and goes on to end where the exact
 // run ends, in its tree.
 TEST_CASE("a double run adopts a fresh build where validation finds its tree stale", "[segments][kinetic][float]") {
-  Segment_generator_options o;
-  o.family = Segment_family::rotating;
-  o.n = 10;
-  o.seed = 1;
-  o.end = 2;
-  const Segment_scene s = generate_segments(o);
+  const Segment_scene s = kvd::test::generated(Segment_family::rotating, 10, 1, 2);
   Kinetic_segment_bsp<Exact_kernel> exact(Exact_kernel(), s, false);
   Kinetic_segment_bsp<Double_kernel> fp(Double_kernel(), s, true);
   run(exact, 1000);

@@ -8,24 +8,13 @@
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 #include "kvd/segments/segment_differential.hpp"
-#include "kvd/segments/segment_generators.hpp"
+#include "segment_scenes.hpp"
 
 using namespace kvd;
 using segments::Segment_certificate_key;
 using segments::Site_point;
 
-namespace {
-
-segments::Segment_scene generated(segments::Segment_family family, std::size_t n, std::uint64_t seed, long end) {
-  segments::Segment_generator_options o;
-  o.family = family;
-  o.n = n;
-  o.seed = seed;
-  o.end = end;
-  return segments::generate_segments(o);
-}
-
-}  // namespace
+using kvd::test::generated;
 
 TEST_CASE("segment differential: matching by key and occurrence, missed and spurious", "[differential][segments]") {
   using Kind = Segment_certificate_key::Kind;

@@ -41,9 +41,11 @@ bool Kinetic_segment_bsp<K>::guarded(F f) {
     } catch (const Bsp_contradiction&) {
       ++recovery_.failed_builds;
     }
+    // At now, then at now + 2^i epsilon from the same base.
+    const Time base = now_;
     typename K::FT step = k_.epsilon();
     for (int i = 0; i <= kinetic::recovery_steps; ++i, step = step * typename K::FT(2)) {
-      if (i > 0) now_ = now_ + step;
+      if (i > 0) now_ = base + step;  // step = 2^i epsilon
       try {
         rebuild();
         ++recovery_.rebuilds;
@@ -335,10 +337,10 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
   }
   scene_.segments[segment].motion = motion;
   pred_.refresh(segment, now_);
-  // The certificates naming the segment, decided again: the same sign makes
-  // new polynomials and a new failure time; another sign is a change now.
-  // The certificates naming the segment, from the index (Lemma 3.1: their
-  // number, not that of all certificates); keys gone since are dropped.
+  // The certificates naming the segment, found through the index (Lemma 3.1:
+  // their number, not that of all certificates; keys gone since are dropped),
+  // decided again: the same sign makes new polynomials and a new failure
+  // time; another sign is a change now.
   std::vector<Segment_certificate_key> named;
   auto& indexed = by_segment_[segment];
   for (auto it = indexed.begin(); it != indexed.end();)
