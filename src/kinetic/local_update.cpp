@@ -1,8 +1,6 @@
 #include "kvd/detail/kinetic/local_update.hpp"
 
 #include <algorithm>
-#include <map>
-#include <string>
 #include <tuple>
 
 #include "kvd/tree/compare.hpp"
@@ -59,27 +57,38 @@ void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
 }
 
 // The nodes_changed of Update_cost, from the journal's saved nodes (those
-// that held a node before) and the live changed nodes after, by canonical
-// text: the slots whose text after is new or whose text before is gone.
-// Texts are distinct within a tree (pieces of one site are disjoint).
+// that held a node before) and the live changed nodes after, by content (as
+// canonical_text would write it): the slots whose content after is new or
+// whose content before is gone. Contents are distinct within a tree (pieces
+// of one site are disjoint).
 std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& journal, std::vector<int> changed) {
-  std::map<int, std::string> before, after;
-  const std::set<int> free_before(journal.free_at_start().begin(), journal.free_at_start().end());
+  using Held = std::pair<tree::Node_content, int>;
+  const auto sorted = [](std::vector<int> v) {
+    std::ranges::sort(v);
+    return v;
+  };
+  const std::vector<int> free_before = sorted(journal.free_at_start()), free_after = sorted(t.free_nodes);
+  std::vector<Held> before, after;
   for (const auto& [n, node] : journal.saved())
-    if (!free_before.contains(n)) before.emplace(n, tree::canonical_text(node));
-  const std::set<int> free_after(t.free_nodes.begin(), t.free_nodes.end());
+    if (!std::ranges::binary_search(free_before, n)) before.emplace_back(tree::content(node), n);
+  std::ranges::sort(changed);
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
   for (int n : changed)  // a changed slot past the end was released and dropped
-    if (static_cast<std::size_t>(n) < t.nodes.size() && !free_after.contains(n))
-      after.emplace(n, tree::canonical_text(t.nodes[static_cast<std::size_t>(n)]));
-  std::set<std::string> texts_before, texts_after;
-  for (const auto& [n, text] : before) texts_before.insert(text);
-  for (const auto& [n, text] : after) texts_after.insert(text);
-  std::set<int> slots;
-  for (const auto& [n, text] : after)
-    if (!texts_before.contains(text)) slots.insert(n);
-  for (const auto& [n, text] : before)
-    if (!texts_after.contains(text)) slots.insert(n);
-  return slots.size();
+    if (static_cast<std::size_t>(n) < t.nodes.size() && !std::ranges::binary_search(free_after, n))
+      after.emplace_back(tree::content(t.nodes[static_cast<std::size_t>(n)]), n);
+  std::ranges::sort(before);
+  std::ranges::sort(after);
+  const auto holds = [](const std::vector<Held>& in, const tree::Node_content& c) {
+    const auto it = std::ranges::lower_bound(in, c, {}, &Held::first);
+    return it != in.end() && it->first == c;
+  };
+  std::vector<int> slots;
+  for (const auto& [c, n] : after)
+    if (!holds(before, c)) slots.push_back(n);
+  for (const auto& [c, n] : before)
+    if (!holds(after, c)) slots.push_back(n);
+  std::ranges::sort(slots);
+  return static_cast<std::size_t>(std::unique(slots.begin(), slots.end()) - slots.begin());
 }
 
 }  // namespace

@@ -8,6 +8,20 @@
 
 namespace kvd::kinetic {
 
+namespace {
+
+// Slot sets as increasing vectors.
+void add(std::vector<int>& slots, int s) {
+  const auto it = std::ranges::lower_bound(slots, s);
+  if (it == slots.end() || *it != s) slots.insert(it, s);
+}
+void remove(std::vector<int>& slots, int s) {
+  const auto it = std::ranges::lower_bound(slots, s);
+  if (it != slots.end() && *it == s) slots.erase(it);
+}
+
+}  // namespace
+
 template <class K>
 typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::Classifier<K>& c,
                                                               const tree::Kvd_tree& t, const tree::Tree_links& links,
@@ -99,11 +113,11 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   std::map<Certificate_key, int> before;
   const auto touch = [&](const Certificate_key& key) {
     auto& h = holders_[key];
-    before.try_emplace(key, h.empty() ? -1 : *h.begin());
+    before.try_emplace(key, h.empty() ? -1 : h.front());
     return &h;
   };
   for (int slot : not_kept_slots)
-    for (const auto& cert : records_[static_cast<std::size_t>(slot)].certificates) touch(cert.key)->erase(slot);
+    for (const auto& cert : records_[static_cast<std::size_t>(slot)].certificates) remove(*touch(cert.key), slot);
   // 2. A pending key held before by another slot that is not kept in place
   // (the rebuild renumbers every node) keeps that slot's certificates;
   // the other pending nodes make theirs. Records are written afterwards:
@@ -142,7 +156,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     r.certificates = std::move(certs[p]);
     for (auto& cert : r.certificates) {
       cert.node = pending[p].node;
-      touch(cert.key)->insert(pending[p].node);
+      add(*touch(cert.key), pending[p].node);
     }
     where_.try_emplace(pending[p].key, pending[p].node);  // a key met twice stays with its first node
     r.key = std::move(pending[p].key);
@@ -160,7 +174,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
       holders_.erase(it);
       continue;
     }
-    const int holder = *it->second.begin();
+    const int holder = it->second.front();
     const auto slot = static_cast<std::size_t>(holder);
     if (holder == old && !rewritten[slot]) continue;
     for (const auto& cert : records_[slot].certificates)

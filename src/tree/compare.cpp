@@ -22,6 +22,8 @@ std::vector<Symbolic_vertex> canonical_vertices(const Fragment& f) {
 
 }  // namespace
 
+Node_content content(const Node& n) { return {n.cut, canonical_vertices(n.fragment)}; }
+
 std::string canonical_text(const Node& n) {
   const char* kind = n.cut.kind == Symbolic_plane::Kind::P ? "P" : n.cut.kind == Symbolic_plane::Kind::E ? "E" : "T";
   std::string r = kind + std::to_string(n.cut.id) + ":";

@@ -20,8 +20,10 @@
 // with no node: the same for every kernel and platform.
 #pragma once
 
+#include <compare>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "kvd/tree/kvd_tree.hpp"
 
@@ -32,6 +34,14 @@ namespace kvd::tree {
 Fragment canonical(Fragment f);
 
 std::string canonical_serialisation(const Kvd_tree& t);
+// What TEXT(n) writes, as values: two nodes have equal contents exactly
+// when their texts are equal. Cheaper to compare than the texts.
+struct Node_content {
+  Symbolic_plane cut;
+  std::vector<Symbolic_vertex> vertices;  // canonical order
+  auto operator<=>(const Node_content&) const = default;
+};
+Node_content content(const Node& n);
 // TEXT(n), and H(n) from the hashes of n's subtrees.
 std::string canonical_text(const Node& n);
 std::string node_hash(const Node& n, const std::string& left, const std::string& right);

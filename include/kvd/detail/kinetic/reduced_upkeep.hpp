@@ -23,6 +23,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "kvd/detail/tree/tree_links.hpp"
@@ -109,7 +110,8 @@ private:
   };
   std::vector<Record> records_;
   std::map<Key, int> where_;  // the slot holding each key
-  std::map<Certificate_key, std::set<int>> holders_;  // the slots holding each key
+  // The slots holding each key, increasing (one but in degenerate cases).
+  std::unordered_map<Certificate_key, std::vector<int>, Certificate_key_hash> holders_;
   std::map<Path, int> paths_;  // every path met since the last clear()
   int next_path_ = 0;
   bool remake_ = false;
