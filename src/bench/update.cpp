@@ -5,8 +5,6 @@
 // validation. Writes update.csv, update.md and, with gnuplot, update.svg.
 #include "update.hpp"
 
-#include <sys/resource.h>
-
 #include <iostream>
 
 #include "bench.hpp"
@@ -94,12 +92,6 @@ Run simulate(const K& k, const scene::Scene& s, const Config& c, const Configura
   }
 }
 
-double peak_rss_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) / 1024.0;  // Linux: kilobytes
-}
-
 }  // namespace
 
 int update(cli::Args& args) {
@@ -138,7 +130,7 @@ int update(cli::Args& args) {
                 << " batches, mean " << cli::fixed(r.costs.average, 3) << " ms, median "
                 << cli::fixed(r.costs.median, 3) << " ms\n";
     }
-    size.peak_rss_mib = peak_rss_mib();
+    size.peak_rss_mib = cli::peak_rss_mib();
     all_same = all_same && size.same_tree();
     sizes.push_back(std::move(size));
   }

@@ -1,5 +1,7 @@
 #include "cli.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -145,6 +147,12 @@ std::string seconds_since(std::chrono::steady_clock::time_point start) {
   std::snprintf(buf, sizeof buf, "%.6f",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return buf;
+}
+
+double peak_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;  // Linux: kilobytes
 }
 
 bool ends_with(const std::string& name, const std::string& tail) {

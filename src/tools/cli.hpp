@@ -199,6 +199,9 @@ std::function<void(std::size_t batches, std::size_t failures)> progress_every_fe
 // Seconds elapsed since `start`, with microsecond digits ("0.012345").
 std::string seconds_since(std::chrono::steady_clock::time_point start);
 
+// The process's peak resident memory so far, in MiB (getrusage).
+double peak_rss_mib();
+
 // Whether a file name ends with `tail` (".svg"): which output to write.
 bool ends_with(const std::string& name, const std::string& tail);
 

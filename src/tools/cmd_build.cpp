@@ -1,12 +1,14 @@
 // kvd build SCENE: construct the KVD at an instant and print the statistics
 // of thesis Figure 8.4.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include "cli.hpp"
 #include "json_out.hpp"
+#include "report.hpp"
 #include "segment_commands.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -42,7 +44,9 @@ const char* const build_help =
     "  --json          one JSON object: vertices, edges, triangles, p_nodes,\n"
     "                  e_nodes, t_nodes, nodes, height, seconds, structure_hash,\n"
     "                  filter (the exact kernel's filter statistics, README;\n"
-    "                  null for double and mpfr)\n"
+    "                  null for double and mpfr), memory (the process's peak\n"
+    "                  resident MiB, and that peak per node in bytes: the\n"
+    "                  scene, the classifier's caches and the tree)\n"
     "\n"
     "For a kvd-segments/1 scene (told apart by its \"format\"): the cylindrical\n"
     "BSP of the segments (seed 003, section 2.1) just after T: segments,\n"
@@ -63,6 +67,8 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
   const tree::Kvd_tree t = build_tree("build", path, classifier, k.time(from_rational<typename K::FT>(time)));
   const std::string secs = seconds_since(start);
   const tree::Tree_statistics st = t.statistics();
+  const double peak = peak_rss_mib();
+  const double per_node = st.nodes ? peak * 1024 * 1024 / static_cast<double>(st.nodes) : 0;
   if (tree_only) {
     std::cout << t.describe();
   } else if (json) {
@@ -71,14 +77,16 @@ int run(const K& k, const std::string& path, const scene::Scene& s, const scene:
                     {"triangles", s.triangles.size()}, {"p_nodes", st.p_nodes},
                     {"e_nodes", st.e_nodes}, {"t_nodes", st.t_nodes}, {"nodes", st.nodes},
                     {"height", st.height}, {"seconds", decimal(secs)},
-                    {"structure_hash", tree::structure_hash(t)}, {"filter", filter_json(k)}};
+                    {"structure_hash", tree::structure_hash(t)}, {"filter", filter_json(k)},
+                    {"memory", {{"peak_rss_mib", decimal(fixed(peak, 1))}, {"peak_bytes_per_node", std::lround(per_node)}}}};
     std::cout << json_line(j) << "\n";
   } else {
     std::cout << "kernel:    " << kernel_label(k) << "\ntime:      " << time.get_str() << "\nvertices:  " << s.rest.size()
               << "\nedges:     " << s.edges.size() << "\ntriangles: " << s.triangles.size()
               << "\nP-nodes:   " << st.p_nodes << "\nE-nodes:   " << st.e_nodes << "\nT-nodes:   " << st.t_nodes
               << "\nnodes:     " << st.nodes << "\nheight:    " << st.height << "\nseconds:   " << secs
-              << "\nstructure: " << tree::structure_hash(t) << "\n";
+              << "\nstructure: " << tree::structure_hash(t) << "\nmemory:    " << fixed(peak, 1) << " MiB peak, "
+              << std::lround(per_node) << " bytes per node\n";
   }
   return 0;
 }

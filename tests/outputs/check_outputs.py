@@ -21,7 +21,7 @@ import subprocess
 import sys
 
 TIMINGS = {"seconds", "seconds_exact", "seconds_inexact", "construction_ms", "update_ms",
-           "tree_update_share", "certificate_update_share"}
+           "tree_update_share", "certificate_update_share", "memory"}
 DIGESTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "digests.txt")
 
 
