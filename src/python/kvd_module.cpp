@@ -1,7 +1,9 @@
 // The Python module `kvd` (pybind11): scenes, the static KVD at an instant,
 // and the kinetic KVD stepped from Python, on the exact, double or MPFR
-// kernel. Exact numbers cross as fractions.Fraction (and exact times also
-// as the library's text); the module is a thin client of include/kvd/kvd.hpp.
+// kernel; the same for moving segments (segment_bindings.cpp). Exact
+// numbers cross as fractions.Fraction (and exact times also as the
+// library's text, convert.hpp); the module is a thin client of
+// include/kvd/kvd.hpp and the segments' public headers.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -11,6 +13,7 @@
 #include <string>
 #include <variant>
 
+#include "convert.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kvd.hpp"
 
@@ -18,17 +21,10 @@ namespace py = pybind11;
 
 namespace {
 
+using kvd::python::put_time;
+using kvd::python::to_fraction;
+using kvd::python::to_mpq;
 using kvd::scene::Scene;
-
-// Any number Python's Fraction takes (int, Fraction, float exactly, "1/3", "0.25").
-mpq_class to_mpq(const py::handle& x) {
-  const py::object fraction = py::module_::import("fractions").attr("Fraction")(x);
-  mpq_class q(py::str(fraction).cast<std::string>());
-  q.canonicalize();
-  return q;
-}
-
-py::object to_fraction(const mpq_class& q) { return py::module_::import("fractions").attr("Fraction")(q.get_str()); }
 
 // A scene from Python lists: turned into kvd-scene/1 text with exact
 // numbers, so that it goes through the file format's full validation.
@@ -103,18 +99,6 @@ py::dict build(const Scene& s, const py::handle& t, const py::object& view) {
   py::dict d = statistics(tree);
   if (!view.is_none()) d["order"] = fragments(c, tree, kvd::query::back_to_front(c, tree, view_point(view), at), at);
   return d;
-}
-
-// An instant as Python sees it: the library's text, a float, and for an
-// exact time its isolating interval as Fractions (lo == hi for a rational).
-template <class K>
-void put_time(py::dict& d, const K& k, const typename K::Time& t, const char* key) {
-  d[key] = k.to_string(t);
-  d[(std::string(key) + "_approx").c_str()] = k.to_double(t);
-  if constexpr (std::is_same_v<K, kvd::Exact_kernel>) {
-    const auto [lo, hi] = t.canonical_interval();
-    d[(std::string(key) + "_interval").c_str()] = py::make_tuple(to_fraction(lo), to_fraction(hi));
-  }
 }
 
 // The stepping KVD behind kvd.Kinetic, whatever its kernel.
@@ -223,18 +207,9 @@ std::unique_ptr<Any_kinetic> make_kinetic(const Scene& s, const std::string& ker
   else if (validate == "none") o.validate = kvd::kinetic::Validation::none;
   else throw py::value_error("validate is 'every', 'end' or 'none', not '" + validate + "'");
   if (!until.is_none()) o.until = to_mpq(until);
-  if (kernel == "exact") return std::make_unique<Kinetic_of<kvd::Exact_kernel>>(kvd::Exact_kernel(), s, o);
-  if (kernel == "double") return std::make_unique<Kinetic_of<kvd::Double_kernel>>(kvd::Double_kernel(), s, o);
-  if (kernel.rfind("mpfr:", 0) == 0) {
-    unsigned long bits = 0;
-    try {
-      bits = std::stoul(kernel.substr(5));
-    } catch (const std::exception&) {
-    }
-    if (bits < 2 || bits > 65536) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536");
-    return std::make_unique<Kinetic_of<kvd::Mpfr_kernel>>(kvd::Mpfr_kernel(static_cast<unsigned>(bits)), s, o);
-  }
-  throw py::value_error("kernel is 'exact', 'double' or 'mpfr:BITS', not '" + kernel + "'");
+  return kvd::python::with_kernel(kernel, [&](const auto& k) -> std::unique_ptr<Any_kinetic> {
+    return std::make_unique<Kinetic_of<std::decay_t<decltype(k)>>>(k, s, o);
+  });
 }
 
 }  // namespace
@@ -291,4 +266,6 @@ PYBIND11_MODULE(kvd, m) {
       .def("back_to_front", &Any_kinetic::back_to_front, py::arg("view"),
            "The triangle ids of the tree in force's fragments, back to front from view = (x, y, z).")
       .def_property_readonly("summary", &Any_kinetic::summary);
+
+  kvd::python::bind_segments(m);
 }

@@ -130,11 +130,13 @@ void Reader::check_geometry(const Segment_scene& s) const {
 }
 
 Segment_scene Reader::read(const Json_value& doc, const Segment_load_options& options) const {
+  // The format before the keys: a scene of triangles is told so, not that
+  // "objects" is an unknown key.
+  const Json_value* format = doc.kind == Kind::object ? doc.find("format") : nullptr;
+  if (format && (format->kind != Kind::string || format->text != "kvd-segments/1"))
+    fail("/format", "unknown format (expected the string \"kvd-segments/1\")");
   expect_object(doc, "", {"format", "name", "time", "priority", "segments"}, {"format", "segments"});
   Segment_scene s;
-  const Json_value& format = *doc.find("format");
-  if (format.kind != Kind::string || format.text != "kvd-segments/1")
-    fail("/format", "unknown format (expected the string \"kvd-segments/1\")");
   if (const auto* n = doc.find("name")) {
     expect(*n, Kind::string, "/name");
     s.name = n->text;

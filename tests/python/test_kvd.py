@@ -2,6 +2,7 @@
 with exactly: counts, structure hashes, the painter's order with exact
 coordinates, and the batches of a kinetic run. Run by CTest python_module
 (environment: PYTHONPATH holds the module, KVD_EXECUTABLE and KVD_SOURCE_DIR)."""
+import hashlib
 import json
 import os
 import subprocess
@@ -119,3 +120,54 @@ def test_set_motion_turns_an_object_back():
     assert k.summary["valid"] and k.summary["motion_changes"] == 1 and len(k.events) > before
     with pytest.raises(ValueError):
         k.set_motion(99, still, at)
+
+
+def segment_file(name):
+    return os.path.join(DATA, "segments", name)
+
+
+@pytest.mark.parametrize("name", ["two-crossing.json", "concurrent-three.json", "rotating-10.json", "random-100.json"])
+def test_segment_build_agrees_with_kvd_build(name):
+    ours = kvd.build_segments(kvd.load_segments(segment_file(name)), Fraction(1, 3))
+    theirs = json.loads(cli("build", segment_file(name), "--time", "1/3", "--json"))
+    for key in ("segments", "crossings", "vertex_cuts", "intersection_cuts", "edge_cuts", "nodes", "leaves", "height"):
+        assert ours[key] == theirs[key], key
+    assert ours["tree"] == cli("build", segment_file(name), "--time", "1/3", "--tree").strip()
+    assert ours["structure_hash"] == hashlib.sha256(ours["tree"].encode()).hexdigest()
+
+
+@pytest.mark.parametrize("name", ["rotating-10.json", "random-100.json"])
+def test_segment_stepping_gives_the_batches_of_kvd_simulate(name):
+    theirs = json.loads(cli("simulate", segment_file(name), "--events", "30", "--list", "--json"))
+    k = kvd.KineticSegments(kvd.load_segments(segment_file(name)), events=30)
+    batches = []
+    while (b := k.advance()) is not None:
+        batches.append(b)
+        assert b["structure_hash"] == k.tree["structure_hash"]  # the tree in force is the batch's
+        assert all(event in ("vertex", "edge", "intersection", "flip") for _, _, event in b["failing"])
+    assert [(b["time"], len(b["failing"]), b["changed"], b["certificates"], b["nodes_rebuilt"]) for b in batches] == [
+        (t["time"], t["failing"], t["changed"], t["certificates"], t["nodes_rebuilt"]) for t in theirs["batch_list"]]
+    assert k.summary["failures"] == theirs["failures"]
+    assert k.summary["validations"] == theirs["validations"] and k.summary["validation_failures"] == []
+    assert k.tree["nodes"] == theirs["nodes"] and k.summary["certificates"] == theirs["certificates"]
+    assert k.events == batches
+
+
+def test_segment_local_and_rebuild_steps_agree_on_every_kernel():
+    s = kvd.load_segments(segment_file("random-100.json"))
+    for kernel in ("exact", "double", "mpfr:113"):
+        local = kvd.KineticSegments(s, kernel=kernel, events=40)
+        rebuild = kvd.KineticSegments(s, kernel=kernel, events=40, update="rebuild")
+        a = [(b["time"], b["structure_hash"]) for b in iter(local.advance, None)]
+        assert a == [(b["time"], b["structure_hash"]) for b in iter(rebuild.advance, None)] and len(a) > 10
+        assert local.summary["recovery"]["unrepaired"] == 0
+
+
+def test_segment_bad_input_raises_value_errors():
+    with pytest.raises(ValueError, match="format"):
+        kvd.load_segments(scene_file("two-triangles.json"))
+    s = kvd.load_segments(segment_file("two-crossing.json"))
+    with pytest.raises(ValueError, match="kernel"):
+        kvd.KineticSegments(s, kernel="quad")
+    with pytest.raises(ValueError, match="update"):
+        kvd.KineticSegments(s, update="reinsert")

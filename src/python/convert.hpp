@@ -1,0 +1,64 @@
+// Exact numbers and instants between the library and Python, shared by the
+// module's parts: numbers cross as fractions.Fraction, exact instants also
+// as the library's text and their canonical isolating interval.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "kvd/kernel/exact_kernel.hpp"
+#include "kvd/kernel/float_kernel.hpp"
+
+namespace kvd::python {
+
+namespace py = pybind11;
+
+// Any number Python's Fraction takes (int, Fraction, float exactly, "1/3", "0.25").
+inline mpq_class to_mpq(const py::handle& x) {
+  const py::object fraction = py::module_::import("fractions").attr("Fraction")(x);
+  mpq_class q(py::str(fraction).cast<std::string>());
+  q.canonicalize();
+  return q;
+}
+
+inline py::object to_fraction(const mpq_class& q) {
+  return py::module_::import("fractions").attr("Fraction")(q.get_str());
+}
+
+// An instant as Python sees it: the library's text, a float, and for an
+// exact time its isolating interval as Fractions (lo == hi for a rational).
+template <class K>
+void put_time(py::dict& d, const K& k, const typename K::Time& t, const char* key) {
+  d[key] = k.to_string(t);
+  d[(std::string(key) + "_approx").c_str()] = k.to_double(t);
+  if constexpr (std::is_same_v<K, Exact_kernel>) {
+    const auto [lo, hi] = t.canonical_interval();
+    d[(std::string(key) + "_interval").c_str()] = py::make_tuple(to_fraction(lo), to_fraction(hi));
+  }
+}
+
+// Calls f with the kernel named "exact", "double" or "mpfr:BITS"
+// (ValueError otherwise).
+template <class F>
+auto with_kernel(const std::string& kernel, F f) {
+  if (kernel == "exact") return f(Exact_kernel());
+  if (kernel == "double") return f(Double_kernel());
+  if (kernel.rfind("mpfr:", 0) == 0) {
+    unsigned long bits = 0;
+    try {
+      bits = std::stoul(kernel.substr(5));
+    } catch (const std::exception&) {
+    }
+    if (bits < 2 || bits > 65536) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536");
+    return f(Mpfr_kernel(static_cast<unsigned>(bits)));
+  }
+  throw py::value_error("kernel is 'exact', 'double' or 'mpfr:BITS', not '" + kernel + "'");
+}
+
+// The module's part for segment scenes (segment_bindings.cpp).
+void bind_segments(py::module_& m);
+
+}  // namespace kvd::python

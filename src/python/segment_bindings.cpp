@@ -1,0 +1,199 @@
+// The Python module's part for moving segments (seed 003): kvd-segments/1
+// scenes, the cylindrical BSP at an instant, and the kinetic BSP stepped
+// from Python on any kernel. It agrees with kvd build and kvd simulate on
+// segment scenes (tests/python/test_kvd.py).
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "convert.hpp"
+#include "kvd/detail/tree/digest.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
+#include "kvd/segments/segment_crossings.hpp"
+#include "kvd/segments/segment_io.hpp"
+
+namespace kvd::python {
+
+namespace {
+
+using segments::Segment_scene;
+
+py::dict counts(const segments::Cylindrical_bsp& b) {
+  const segments::Bsp_counts c = b.counts();
+  py::dict d;
+  d["vertex_cuts"] = c.vertex_cuts;
+  d["intersection_cuts"] = c.intersection_cuts;
+  d["edge_cuts"] = c.edge_cuts;
+  d["nodes"] = c.nodes;
+  d["leaves"] = c.leaves;
+  d["height"] = c.height;
+  const std::string text = b.text();
+  d["tree"] = text;
+  d["structure_hash"] = tree::sha256_hex(text);  // as kvd diff compares segment trees
+  return d;
+}
+
+py::dict build(const Segment_scene& s, const py::handle& t) {
+  const mpq_class at = t.is_none() ? s.start : to_mpq(t);
+  const Exact_kernel k;
+  const segments::Segment_predicates<Exact_kernel> pred(k, s);
+  py::dict d = counts(segments::build_cylindrical_bsp(pred, Exact_time(at)));
+  d["segments"] = s.segments.size();
+  d["crossings"] = segments::count_crossings(s, at);
+  return d;
+}
+
+// The stepping segment BSP behind kvd.KineticSegments, whatever its kernel.
+class Any_segment_kinetic {
+public:
+  virtual ~Any_segment_kinetic() = default;
+  virtual py::object advance() = 0;
+  virtual std::size_t advance_to(const py::handle& t) = 0;
+  virtual py::list events() const = 0;
+  virtual py::dict now() const = 0;
+  virtual py::object next_event_time() = 0;
+  virtual py::dict tree() const = 0;
+  virtual py::dict summary() const = 0;
+};
+
+template <class K>
+class Segment_kinetic_of final : public Any_segment_kinetic {
+public:
+  using Kinetic = segments::Kinetic_segment_bsp<K>;
+  Segment_kinetic_of(const K& k, const Segment_scene& s, std::size_t events, bool validate,
+                     segments::Segment_update update, const std::optional<mpq_class>& until)
+      : k_(k), kin_(k_, s, validate, update), max_events_(events) {
+    if (until) until_ = k_.time(from_rational<typename K::FT>(*until));
+  }
+
+  // The next batch, or None: nothing fails any more, the event limit is
+  // reached, or the next failure is after `until`.
+  py::object advance() override {
+    const auto next = kin_.next_event_time();
+    if (!next || failures_ >= max_events_ || (until_ && k_.compare(*next, *until_) > 0)) return py::none();
+    batches_.push_back(batch(kin_.advance()));
+    return batches_.back();
+  }
+  std::size_t advance_to(const py::handle& t) override {
+    const auto at = k_.time(from_rational<typename K::FT>(to_mpq(t)));
+    std::size_t n = 0;
+    for (auto& b : kin_.advance_to(at)) {
+      batches_.push_back(batch(std::move(b)));
+      ++n;
+    }
+    return n;
+  }
+  py::list events() const override {
+    py::list out;
+    for (const auto& b : batches_) out.append(b);
+    return out;
+  }
+  py::dict now() const override {
+    py::dict d;
+    put_time(d, k_, kin_.now(), "time");
+    return d;
+  }
+  py::object next_event_time() override {
+    const auto t = kin_.next_event_time();
+    if (!t) return py::none();
+    py::dict d;
+    put_time(d, k_, *t, "time");
+    return d;
+  }
+  py::dict tree() const override { return counts(kin_.tree()); }
+  py::dict summary() const override {
+    py::dict d;
+    d["batches"] = batches_.size();
+    d["failures"] = failures_;
+    d["certificates"] = kin_.certificates();
+    d["validations"] = kin_.validations();
+    d["validation_failures"] = kin_.validation_failures();
+    const kinetic::Recovery& r = kin_.recovery();
+    d["recovery"] = py::dict(py::arg("failed_builds") = r.failed_builds, py::arg("stale_trees") = r.stale_trees,
+                             py::arg("rebuilds") = r.rebuilds, py::arg("unrepaired") = r.unrepaired);
+    d["stuck"] = kin_.stuck();
+    return d;
+  }
+
+private:
+  py::dict batch(const typename Kinetic::Batch& b) {
+    failures_ += b.failing.size();
+    py::dict d;
+    put_time(d, k_, b.time, "time");
+    py::list failing;
+    for (const auto& key : b.failing)
+      failing.append(py::make_tuple(segments::kind_name(key.kind), segments::features(key),
+                                    segments::segment_event_names[static_cast<int>(
+                                        segments::event_of(key, kin_.scene().rank))]));
+    d["failing"] = failing;
+    d["changed"] = b.changed;
+    d["certificates"] = b.certificates;
+    d["nodes_rebuilt"] = b.nodes_rebuilt;
+    d["update_seconds"] = b.update_seconds;
+    d["structure_hash"] = tree::sha256_hex(kin_.tree().text());
+    return d;
+  }
+
+  K k_;
+  Kinetic kin_;
+  std::size_t max_events_, failures_ = 0;
+  std::optional<typename K::Time> until_;
+  std::vector<py::dict> batches_;
+};
+
+std::unique_ptr<Any_segment_kinetic> make_kinetic(const Segment_scene& s, const std::string& kernel, std::size_t events,
+                                                  bool validate, const std::string& update, const py::handle& until) {
+  if (update != "local" && update != "rebuild")
+    throw py::value_error("update is 'local' or 'rebuild', not '" + update + "'");
+  const auto u = update == "local" ? segments::Segment_update::local : segments::Segment_update::rebuild;
+  const std::optional<mpq_class> end = until.is_none() ? std::nullopt : std::optional(to_mpq(until));
+  return with_kernel(kernel, [&](const auto& k) -> std::unique_ptr<Any_segment_kinetic> {
+    using K = std::decay_t<decltype(k)>;
+    return std::make_unique<Segment_kinetic_of<K>>(k, s, events, validate, u, end);
+  });
+}
+
+}  // namespace
+
+void bind_segments(py::module_& m) {
+  py::class_<Segment_scene>(m, "SegmentScene", "A scene of moving segments in the plane (SEGMENT_FORMAT.md)")
+      .def_property_readonly("segments", [](const Segment_scene& s) { return s.segments.size(); })
+      .def_property_readonly("start", [](const Segment_scene& s) { return to_fraction(s.start); })
+      .def_property_readonly("end",
+                             [](const Segment_scene& s) { return s.end ? to_fraction(*s.end) : py::object(py::none()); })
+      .def("__repr__", [](const Segment_scene& s) {
+        return "<kvd.SegmentScene: " + std::to_string(s.segments.size()) + " segments>";
+      });
+  m.def(
+      "load_segments",
+      [](const std::string& path, const py::object& seed) {
+        segments::Segment_load_options o;
+        if (!seed.is_none()) o.seed = seed.cast<std::uint64_t>();
+        return segments::load_segments(path, o);
+      },
+      py::arg("path"), py::arg("seed") = py::none(),
+      "Reads a kvd-segments/1 file (seed: another priority seed); SceneError (a ValueError) names the place\n"
+      "of a bad input.");
+  m.def("build_segments", &build, py::arg("scene"), py::arg("t") = py::none(),
+        "The cylindrical BSP of the segments just after t (default: the scene's start), exactly (seed 003,\n"
+        "section 2.1): its cuts by kind, nodes, leaves, height, the tree as nested parentheses (as kvd build\n"
+        "--tree prints it) and its SHA-256 (structure_hash); segments and crossings at t.");
+  py::class_<Any_segment_kinetic>(m, "KineticSegments", "The kinetic BSP of moving segments (seed 003), stepped batch by batch")
+      .def(py::init(&make_kinetic), py::arg("scene"), py::arg("kernel") = "exact", py::arg("events") = 100,
+           py::arg("validate") = true, py::arg("update") = "local", py::arg("until") = py::none())
+      .def("advance", &Any_segment_kinetic::advance,
+           "Processes the next batch and returns it, or None when nothing fails any more, `events` failures\n"
+           "were processed, or the next batch is after `until`.")
+      .def("advance_to", &Any_segment_kinetic::advance_to, py::arg("t"),
+           "Processes every batch at a time <= t and moves to t; how many.")
+      .def_property_readonly("events", &Any_segment_kinetic::events, "The batches processed so far.")
+      .def_property_readonly("now", &Any_segment_kinetic::now)
+      .def_property_readonly("next_event_time", &Any_segment_kinetic::next_event_time)
+      .def_property_readonly("tree", &Any_segment_kinetic::tree, "The tree in force, as build_segments gives it.")
+      .def_property_readonly("summary", &Any_segment_kinetic::summary);
+}
+
+}  // namespace kvd::python
