@@ -4,11 +4,39 @@
 // root isolation.
 #pragma once
 
-#include <map>
+#include <gmpxx.h>
+
+#include <cstddef>
+#include <functional>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
+#include "kvd/kernel/mpfr_number.hpp"
+
 namespace kvd::kinetic {
+
+// A hash of a polynomial's coefficients; equal coefficients (exactly equal
+// numbers) hash alike.
+struct Coefficients_hash {
+  static std::size_t of(const mpq_class& x) {
+    std::size_t h = 0;
+    for (const mpz_srcptr z : {mpq_numref(x.get_mpq_t()), mpq_denref(x.get_mpq_t())}) {
+      h = h * 31 + static_cast<std::size_t>(z->_mp_size);
+      for (int i = 0, n = z->_mp_size < 0 ? -z->_mp_size : z->_mp_size; i < n; ++i)
+        h = h * 0x9e3779b97f4a7c15ULL + z->_mp_d[i];
+    }
+    return h;
+  }
+  static std::size_t of(double x) { return std::hash<double>()(x); }
+  static std::size_t of(const Mpfr_number& x) { return std::hash<double>()(x.to_double()); }
+  template <class FT>
+  std::size_t operator()(const std::vector<FT>& c) const {
+    std::size_t h = c.size();
+    for (const FT& x : c) h = h * 1000003 ^ of(x);
+    return h;
+  }
+};
 
 template <class K>
 class Root_cache {
@@ -34,7 +62,7 @@ public:
   }
 
 private:
-  std::map<std::vector<typename K::FT>, std::optional<Time>> roots_;
+  std::unordered_map<std::vector<typename K::FT>, std::optional<Time>, Coefficients_hash> roots_;
 };
 
 }  // namespace kvd::kinetic
