@@ -95,11 +95,14 @@ void on_built_scenes(F f) {
 }
 
 // A small generated scene: `uniform-density` with n triangles (the same
-// bytes on every platform for a seed).
-scene::Scene generated(std::size_t n, std::uint64_t seed) {
+// bytes on every platform for a seed), `moving` of them moving by
+// translations of degree `degree`.
+scene::Scene generated(std::size_t n, std::uint64_t seed, int degree = 1, const mpq_class& moving = 1) {
   scene::Uniform_params p;
   p.triangles = n;
   p.seed = seed;
+  p.degree = degree;
+  p.moving = moving;
   return scene::read_scene(scene::write_scene(scene::uniform_density(p)), "generated");
 }
 
@@ -421,17 +424,6 @@ std::size_t same_simulation(const scene::Scene& s, std::size_t events) {
   CHECK(local.structure_hash == rebuild.structure_hash);
   CHECK(local.collision == rebuild.collision);
   return static_cast<std::size_t>(std::ranges::count_if(local.batches, [](const auto& b) { return b.changed; }));
-}
-
-// `generated` with `moving` of its triangles moving, translations of degree
-// `degree`.
-scene::Scene generated(std::size_t n, std::uint64_t seed, int degree, const mpq_class& moving) {
-  scene::Uniform_params p;
-  p.triangles = n;
-  p.seed = seed;
-  p.degree = degree;
-  p.moving = moving;
-  return scene::read_scene(scene::write_scene(scene::uniform_density(p)), "generated");
 }
 }  // namespace
 
