@@ -438,7 +438,7 @@ TEST_CASE("local and rebuild updates give the same simulation", "[local][kinetic
   }
 }
 
-TEST_CASE("local and rebuild updates agree on the stiff scenes and twenty generated ones", "[local][kinetic]") {
+TEST_CASE("local and rebuild updates agree on the stiff scenes and twenty generated ones", "[local][kinetic][slow]") {
   // The stiff scenes (close, simultaneous and tangential events, high
   // degrees, rational rotations, wide ranges of scale and speed).
   for (const char* name : {"close-events", "high-degree", "near-degenerate", "rational-rotation", "simultaneous",
