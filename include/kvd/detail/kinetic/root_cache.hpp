@@ -22,9 +22,8 @@ struct Coefficients_hash {
   static std::size_t of(const mpq_class& x) {
     std::size_t h = 0;
     for (const mpz_srcptr z : {mpq_numref(x.get_mpq_t()), mpq_denref(x.get_mpq_t())}) {
-      h = h * 31 + static_cast<std::size_t>(z->_mp_size);
-      for (int i = 0, n = z->_mp_size < 0 ? -z->_mp_size : z->_mp_size; i < n; ++i)
-        h = h * 0x9e3779b97f4a7c15ULL + z->_mp_d[i];
+      h = h * 31 + static_cast<std::size_t>(mpz_sgn(z) + 1);
+      for (std::size_t i = 0, n = mpz_size(z); i < n; ++i) h = h * 0x9e3779b97f4a7c15ULL + mpz_getlimbn(z, i);
     }
     return h;
   }
