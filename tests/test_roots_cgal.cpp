@@ -174,9 +174,17 @@ TEST_CASE("closed forms for degrees 1 and 2 agree with CGAL, after rational and 
     std::vector<Exact_time> afters{Exact_time(rnd.rational(1 + rnd.below(40)))};
     for (const auto& s : starts) afters.push_back(s);
     const Cgal_roots cgal(p);
+    // Half the time a rational multiple of p, of either sign: the same roots,
+    // asked through coefficients with denominators.
+    kvd::Poly<mpq_class> asked = kvd::zpoly::to_poly(p);
+    if (rnd.below(2)) {
+      mpq_class c = rnd.rational(1 + rnd.below(40));
+      if (c == 0) c = -1;
+      asked = asked * kvd::Poly<mpq_class>{c};
+    }
     for (const Exact_time& after : afters) {
       const Exact_time fresh = after.detached();  // wide as found, not refined by an earlier query
-      const std::optional<Exact_time> got = k.next_root(kvd::zpoly::to_poly(p), fresh);
+      const std::optional<Exact_time> got = k.next_root(asked, fresh);
       std::optional<std::size_t> expected;
       for (std::size_t j = 0; j < cgal.size() && !expected; ++j) {
         if (cgal.multiplicity(j) % 2 == 0) continue;

@@ -52,9 +52,23 @@ std::vector<Exact_time> quadratic_roots(const zpoly::ZPoly& q) {
   };
   mpz_class s;
   mpz_sqrt(s.get_mpz_t(), d.get_mpz_t());
-  if (s * s == d) return {Exact_time(ratio(-b - s)), Exact_time(ratio(-b + s))};
+  if (s * s == d) return {Exact_time::of_canonical(ratio(-b - s)), Exact_time::of_canonical(ratio(-b + s))};
   return {Exact_time::algebraic(q, ratio(-b - s - 1), ratio(-b - s)),
           Exact_time::algebraic(q, ratio(-b + s), ratio(-b + s + 1))};
+}
+
+// Whether the root of c0 + c1 t (c1 != 0) is greater than a. With
+// c0 = n0/d0, c1 = n1/d1 and a = an/ad (positive denominators),
+// X = n0 d1 ad + n1 d0 an = d0 d1 ad p(a), and the root is after a when
+// X and n1 have opposite signs.
+bool root_after(const mpq_class& c0, const mpq_class& c1, const mpq_class& a) {
+  thread_local mpz_class x, y;  // scratch: no allocation once grown
+  mpz_mul(x.get_mpz_t(), c0.get_num_mpz_t(), c1.get_den_mpz_t());
+  mpz_mul(x.get_mpz_t(), x.get_mpz_t(), a.get_den_mpz_t());
+  mpz_mul(y.get_mpz_t(), c1.get_num_mpz_t(), c0.get_den_mpz_t());
+  mpz_mul(y.get_mpz_t(), y.get_mpz_t(), a.get_num_mpz_t());
+  x += y;
+  return sgn(x) == -sgn(c1.get_num());
 }
 
 }  // namespace
@@ -116,10 +130,19 @@ int Exact_kernel::sign_after(const Poly& p, const Time& t) const {
 
 std::optional<Exact_time> Exact_kernel::next_root(const Poly& p, const Time& after) const {
   if (p.degree() == 1) {  // most certificates of linear motions: no integer conversion
-    const mpq_class r = -p.coefficients()[0] / p.coefficients()[1];
-    if (after.is_rational() ? r <= after.rational() : r <= after.lower()) return std::nullopt;
-    if (after.is_rational() || r >= after.upper()) return Exact_time(r);
-    return after.compare_refining(r) < 0 ? std::optional(Exact_time(r)) : std::nullopt;
+    const mpq_class &c0 = p.coefficients()[0], &c1 = p.coefficients()[1];
+    const auto root = [&] {
+      mpq_class r;
+      mpq_div(r.get_mpq_t(), c0.get_mpq_t(), c1.get_mpq_t());
+      mpq_neg(r.get_mpq_t(), r.get_mpq_t());  // in place: no temporary
+      return Exact_time::of_canonical(std::move(r));
+    };
+    // Against a rational, decided on integers before any gcd.
+    if (after.is_rational()) return root_after(c0, c1, after.rational()) ? std::optional(root()) : std::nullopt;
+    Exact_time r = root();
+    if (r.rational() <= after.lower()) return std::nullopt;
+    if (r.rational() >= after.upper() || after.compare_refining(r.rational()) < 0) return r;
+    return std::nullopt;
   }
   const zpoly::ZPoly q = zpoly::odd_part(zpoly::to_zpoly(p));
   if (zpoly::degree(q) < 1) return std::nullopt;

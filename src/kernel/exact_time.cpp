@@ -8,17 +8,29 @@
 
 namespace kvd {
 
-void Exact_time::Rep::become_rational(const mpq_class& r) {
+void Exact_time::Rep::become_rational(mpq_class r) {
   rational = true;
-  lo = hi = r;
-  p = {-r.get_num(), r.get_den()};
+  hi = r;
+  lo = std::move(r);
+  p.clear();  // most rational instants are never asked for it
   sign_hi = 0;
 }
 
 Exact_time::Exact_time(const mpq_class& r) : rep_(std::make_shared<Rep>()) {
   mpq_class c = r;
   c.canonicalize();  // a non-canonical mpq would corrupt GMP's arithmetic
-  rep_->become_rational(c);
+  rep_->become_rational(std::move(c));
+}
+
+Exact_time Exact_time::of_canonical(mpq_class&& r) {
+  Exact_time t(Of_rep{}, std::make_shared<Rep>());
+  t.rep_->become_rational(std::move(r));
+  return t;
+}
+
+const zpoly::ZPoly& Exact_time::polynomial() const {
+  if (rep_->rational && rep_->p.empty()) rep_->p = {-rep_->lo.get_num(), rep_->lo.get_den()};
+  return rep_->p;
 }
 
 Exact_time Exact_time::algebraic(zpoly::ZPoly p, const mpq_class& lo, const mpq_class& hi) {
@@ -26,9 +38,9 @@ Exact_time Exact_time::algebraic(zpoly::ZPoly p, const mpq_class& lo, const mpq_
   if (zpoly::degree(p) == 1) {
     mpq_class r(-p[0], p[1]);
     r.canonicalize();  // the denominator may be negative
-    return Exact_time(r);
+    return of_canonical(std::move(r));
   }
-  Exact_time t;
+  Exact_time t(Of_rep{}, std::make_shared<Rep>());
   t.rep_->p = std::move(p);
   t.rep_->lo = lo;
   t.rep_->hi = hi;
@@ -62,9 +74,7 @@ void Exact_time::refine() const {
 }
 
 Exact_time Exact_time::detached() const {
-  Exact_time t;
-  *t.rep_ = *rep_;
-  return t;
+  return Exact_time(Of_rep{}, std::make_shared<Rep>(*rep_));
 }
 
 namespace {

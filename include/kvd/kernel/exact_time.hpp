@@ -24,13 +24,17 @@ class Exact_time {
 public:
   Exact_time() : Exact_time(mpq_class(0)) {}
   explicit Exact_time(const mpq_class& r);
+  // The same from an r that is already canonical, as every result of GMP's
+  // rational arithmetic is: no gcd and no copy.
+  static Exact_time of_canonical(mpq_class&& r);
   // p square-free with exactly one root in (lo, hi) and p(lo) p(hi) < 0.
   static Exact_time algebraic(zpoly::ZPoly p, const mpq_class& lo, const mpq_class& hi);
 
   bool is_rational() const { return rep_->rational; }
   // The value, when is_rational().
   const mpq_class& rational() const { return rep_->lo; }
-  const zpoly::ZPoly& polynomial() const { return rep_->p; }
+  // The defining polynomial; t*den - num for a rational.
+  const zpoly::ZPoly& polynomial() const;
   const mpq_class& lower() const { return rep_->lo; }
   const mpq_class& upper() const { return rep_->hi; }
 
@@ -59,12 +63,14 @@ public:
 
 private:
   struct Rep {
-    zpoly::ZPoly p;      // defining polynomial (t*den - num for a rational)
+    zpoly::ZPoly p;      // defining polynomial; for a rational, made when first asked
     mpq_class lo, hi;    // lo == hi == value for a rational
     int sign_hi = 0;     // sign of p(hi)
     bool rational = true;
-    void become_rational(const mpq_class& r);
+    void become_rational(mpq_class r);
   };
+  struct Of_rep {};  // a tag: 0 must not convert to a representation
+  Exact_time(Of_rep, std::shared_ptr<Rep> rep) : rep_(std::move(rep)) {}
   std::shared_ptr<Rep> rep_;
 };
 
