@@ -3,7 +3,11 @@
 // complete; evaluation at an instant commutes with the motion polynomials.
 #include <catch2/catch.hpp>
 
+#include <optional>
+#include <string>
+
 #include "kvd/geometry/plucker.hpp"
+#include "kvd/kernel/convert.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/symbolic/incidence.hpp"
 #include "kvd/symbolic/scene_geometry.hpp"
@@ -80,4 +84,47 @@ TEST_CASE("P-planes of the default directions have +y on their positive side", "
   Point4<mpq_class> above = g.vertex(0);
   above[1] += above[3];  // one unit further along +y
   CHECK(dot(m, above) > 0);
+}
+
+// The exact field's vertices are the scene's scaled by a positive rational to
+// primitive integer coefficients (signs kept, GMP spared its gcds); the
+// floating-point fields keep the scene's numbers.
+TEST_CASE("exact vertices are positive multiples of the scene's with primitive integer coefficients", "[symbolic]") {
+  for (const char* name : {"uniform-scale-25.json", "viewpoint.json", "rotor.json", "random-20.json"}) {
+    INFO(name);
+    const scene::Scene s = load(name);
+    const auto g = motion_geometry<mpq_class>(s);
+    const auto d = motion_geometry<double>(s);
+    long scaled = 0;
+    for (std::size_t i = 0; i < s.rest.size(); ++i) {
+      const scene::Motion_point p = s.position(i);
+      const Point4<Poly<mpq_class>>& x = g.vertex(i);
+      mpz_class content = 0;
+      std::optional<mpq_class> factor;  // x = factor * p, coordinate by coordinate
+      for (int k = 0; k < 4; ++k) {
+        REQUIRE(x[k].coefficients().size() == p[k].coefficients().size());
+        for (std::size_t j = 0; j < x[k].coefficients().size(); ++j) {
+          const mpq_class& c = x[k].coefficients()[j];
+          CHECK(c.get_den() == 1);
+          mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), c.get_num_mpz_t());
+          const mpq_class& q = p[k].coefficients()[j];
+          if (q == 0) {
+            CHECK(c == 0);
+            continue;
+          }
+          const mpq_class f = c / q;
+          if (!factor) factor = f;
+          CHECK(f == *factor);
+        }
+        for (std::size_t j = 0; j < p[k].coefficients().size(); ++j)
+          CHECK(d.vertex(i)[k].coefficients()[j] == from_rational<double>(p[k].coefficients()[j]));
+      }
+      REQUIRE(factor);
+      CHECK(*factor > 0);
+      CHECK(content == 1);
+      scaled += *factor != 1;
+    }
+    // The generated scene has rational coordinates: they were scaled.
+    if (std::string(name) == "uniform-scale-25.json") CHECK(scaled > 0);
+  }
 }

@@ -1,5 +1,6 @@
 #include "interval.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kvd::filter {
@@ -27,15 +28,27 @@ std::optional<Interval> enclose(const Exact_time& t) {
   return Interval(lo->lower(), hi->upper());
 }
 
-std::optional<std::vector<Interval>> enclose(const Poly<mpq_class>& p) {
+std::optional<std::vector<Interval>> enclose(const Poly<mpq_class>& p, unsigned long shift) {
   std::vector<Interval> r;
   r.reserve(p.coefficients().size());
+  mpq_class scaled;
   for (const mpq_class& c : p.coefficients()) {
-    const auto x = enclose(c);
+    if (shift) mpq_div_2exp(scaled.get_mpq_t(), c.get_mpq_t(), shift);
+    const auto x = enclose(shift ? scaled : c);
     if (!x) return std::nullopt;
     r.push_back(*x);
   }
   return r;
+}
+
+unsigned long shift_for(std::span<const Poly<mpq_class>> polys) {
+  long most = 0;  // |c| < 2^(bits(num) - bits(den) + 1)
+  for (const Poly<mpq_class>& p : polys)
+    for (const mpq_class& c : p.coefficients())
+      if (sgn(c) != 0)
+        most = std::max(most, static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) -
+                                  static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2)) + 1);
+  return most > 50 ? static_cast<unsigned long>(most - 50) : 0;
 }
 
 std::optional<Interval> evaluate(const std::vector<Interval>& p, const Interval& t) {
@@ -49,7 +62,7 @@ std::optional<Interval> evaluate(const std::vector<Interval>& p, const Interval&
 
 int sign_at(const Poly<mpq_class>& p, const Exact_time& t) {
   const auto x = enclose(t);
-  const auto c = enclose(p);
+  const auto c = enclose(p, shift_for({&p, 1}));
   if (!x || !c) return 0;
   const Rounding_scope upward;
   const auto v = evaluate(*c, *x);

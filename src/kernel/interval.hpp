@@ -12,6 +12,7 @@
 #include <gmpxx.h>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <boost/numeric/interval.hpp>
@@ -43,8 +44,16 @@ std::optional<Interval> enclose(const mpq_class& q);
 // A double interval holding the instant: its value, or its isolating
 // interval once refined to a relative width of about 2^-50.
 std::optional<Interval> enclose(const Exact_time& t);
-// The coefficients of p as intervals, lowest degree first; none when one is too large.
-std::optional<std::vector<Interval>> enclose(const Poly<mpq_class>& p);
+// The coefficients of p times 2^-shift (exactly) as intervals, lowest degree
+// first; none when one is too large. A positive scale keeps every sign.
+std::optional<std::vector<Interval>> enclose(const Poly<mpq_class>& p, unsigned long shift = 0);
+// The least shift that brings every coefficient of the polynomials within
+// 2^50, well inside max_input so that values at an instant stay inside too.
+// The exact kernel's integer coordinates (scene_geometry.cpp) give points,
+// planes and certificate polynomials coefficients beyond 2^64; a point or
+// a plane takes one shift for its four polynomials, so that its dots keep
+// their signs and their ratios.
+unsigned long shift_for(std::span<const Poly<mpq_class>> polys);
 
 // p(t) by Horner's rule, inside a Rounding_scope; none if a partial value
 // overflows (checked at every step: finite operands give no NaN).

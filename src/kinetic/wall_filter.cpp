@@ -19,9 +19,12 @@ struct Wall_filter::State {
   template <class Of>
   std::optional<Four> at(const Of& four) const {
     if (!t) return std::nullopt;
+    // One power of two for the four: a positive scale of the whole point or
+    // plane keeps the signs of its dots and of their cross products.
+    const unsigned long shift = filter::shift_for(four.c);
     Four out;
     for (int k = 0; k < 4; ++k) {
-      const auto c = filter::enclose(four[k]);  // converts: outside the rounding scope
+      const auto c = filter::enclose(four[k], shift);  // converts: outside the rounding scope
       if (!c) return std::nullopt;
       const filter::Rounding_scope upward;
       const auto v = filter::evaluate(*c, *t);

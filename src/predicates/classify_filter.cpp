@@ -19,10 +19,12 @@ namespace {
 
 using Motion = std::array<std::vector<Interval>, 4>;  // a point's coordinates, coefficients as intervals
 
+// The point scaled by one power of two (every sign stays), as intervals.
 std::optional<Motion> enclose(const Point4<Poly<mpq_class>>& p) {
+  const unsigned long shift = filter::shift_for(p.c);
   Motion m;
   for (int k = 0; k < 4; ++k) {
-    auto c = filter::enclose(p[k]);
+    auto c = filter::enclose(p[k], shift);
     if (!c) return std::nullopt;
     m[static_cast<std::size_t>(k)] = std::move(*c);
   }

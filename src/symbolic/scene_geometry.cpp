@@ -1,5 +1,7 @@
 #include "kvd/detail/symbolic/scene_geometry_impl.hpp"
 
+#include <type_traits>
+
 #include "kvd/kernel/convert.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
 
@@ -7,13 +9,34 @@ namespace kvd::symbolic {
 
 namespace {
 
+// The same point with integer coefficients, primitive: scaled by the lcm of
+// its denominators over the gcd of its numerators. Every sign the kernel
+// decides is invariant under scaling a point by a positive factor
+// (kvd/geometry/plucker.hpp), and on integers GMP's rational arithmetic
+// skips its gcds. Only for the exact field: the floating-point builds keep
+// the scene's numbers, as the thesis does.
+void make_integral(scene::Motion_point& p) {
+  mpz_class l = 1, g = 0;
+  for (int k = 0; k < 4; ++k)
+    for (const mpq_class& c : p[k].coefficients()) {
+      mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_num_mpz_t());
+    }
+  if (g == 0) return;  // the zero point: nothing to scale
+  mpq_class f(l, g);
+  f.canonicalize();
+  for (int k = 0; k < 4; ++k) p[k] = p[k] * scene::QPoly(f);
+}
+
 // The point as polynomials over FT, negated if its W is negative at `start`
 // (a point with W identically zero, a direction, is kept as it is).
 template <class FT>
-Point4<Poly<FT>> normalized(const scene::Motion_point& p, const scene::Q& start) {
-  const int sign_w = sgn(p[3](start));
+Point4<Poly<FT>> normalized(scene::Motion_point p, const scene::Q& start) {
+  if (sgn(p[3](start)) < 0)
+    for (int k = 0; k < 4; ++k) p[k] = -p[k];
+  if constexpr (std::is_same_v<FT, mpq_class>) make_integral(p);
   Point4<Poly<FT>> r;
-  for (int k = 0; k < 4; ++k) r[k] = poly_from_rational<FT>(sign_w < 0 ? scene::QPoly(-p[k]) : p[k]);
+  for (int k = 0; k < 4; ++k) r[k] = poly_from_rational<FT>(p[k]);
   return r;
 }
 
