@@ -34,28 +34,37 @@ bool equal_algebraic(const Exact_time& a, const Exact_time& b) {
   return zpoly::sign_at(g, lo) != zpoly::sign_at(g, hi);
 }
 
-// The real roots of the square-free quadratic q in increasing order, in
-// closed form: (-b -+ sqrt(D)) / 2a, rational when D is a square; otherwise
-// each isolated by the integer square root s = floor(sqrt(D)), with
-// s < sqrt(D) < s + 1 (the ends are rational, so not roots, and the two
-// intervals are disjoint since s >= 1).
-std::vector<Exact_time> quadratic_roots(const zpoly::ZPoly& q) {
-  const int sa = sgn(q[2]);  // roots and their order are those of sa * q
-  const mpz_class a = sa * q[2], b = sa * q[1], c = sa * q[0];
-  const mpz_class d = b * b - 4 * a * c;
-  if (d < 0) return {};
-  const mpz_class two_a = 2 * a;
-  const auto ratio = [&](const mpz_class& n) {
-    mpq_class r(n, two_a);
+// The sign-changing roots of the quadratic q in increasing order, in closed
+// form: none when D <= 0 (no real root, or a double one where q keeps its
+// sign, so q needs no square-free part); else (-b -+ sqrt(D)) / 2a, rational
+// when D is a square, otherwise each isolated by the integer square root
+// s = floor(sqrt(D)), with s < sqrt(D) < s + 1 (the ends are rational, so
+// not roots, and the two intervals are disjoint since s >= 1).
+class Quadratic_roots {
+public:
+  explicit Quadratic_roots(const zpoly::ZPoly& q) : q_(q) {
+    const int sa = sgn(q[2]);  // roots and their order are those of sa * q
+    a_ = sa * q[2], b_ = sa * q[1];
+    d_ = b_ * b_ - 4 * a_ * (sa * q[0]);
+    if (d_ > 0) mpz_sqrt(s_.get_mpz_t(), d_.get_mpz_t());
+  }
+  std::size_t size() const { return d_ > 0 ? 2 : 0; }
+  // The smaller root for i = 0; made only when asked.
+  Exact_time operator[](std::size_t i) const {
+    const mpz_class n = i == 0 ? mpz_class(-b_ - s_) : mpz_class(-b_ + s_);
+    if (s_ * s_ == d_) return Exact_time::of_canonical(ratio(n));
+    return i == 0 ? Exact_time::algebraic(q_, ratio(n - 1), ratio(n)) : Exact_time::algebraic(q_, ratio(n), ratio(n + 1));
+  }
+
+private:
+  mpq_class ratio(const mpz_class& n) const {
+    mpq_class r(n, 2 * a_);
     r.canonicalize();
     return r;
-  };
-  mpz_class s;
-  mpz_sqrt(s.get_mpz_t(), d.get_mpz_t());
-  if (s * s == d) return {Exact_time::of_canonical(ratio(-b - s)), Exact_time::of_canonical(ratio(-b + s))};
-  return {Exact_time::algebraic(q, ratio(-b - s - 1), ratio(-b - s)),
-          Exact_time::algebraic(q, ratio(-b + s), ratio(-b + s + 1))};
-}
+  }
+  const zpoly::ZPoly& q_;
+  mpz_class a_, b_, d_, s_;
+};
 
 // Whether the root of c0 + c1 t (c1 != 0) is greater than a. With
 // c0 = n0/d0, c1 = n1/d1 and a = an/ad (positive denominators),
@@ -144,11 +153,14 @@ std::optional<Exact_time> Exact_kernel::next_root(const Poly& p, const Time& aft
     if (r.rational() >= after.upper() || after.compare_refining(r.rational()) < 0) return r;
     return std::nullopt;
   }
-  const zpoly::ZPoly q = zpoly::odd_part(zpoly::to_zpoly(p));
+  const zpoly::ZPoly z = zpoly::to_zpoly(p);
+  const zpoly::ZPoly q = zpoly::degree(z) == 2 ? z : zpoly::odd_part(z);
   if (zpoly::degree(q) < 1) return std::nullopt;
   // The first root r of q (every root simple, a sign change) with r > after.
-  const auto first_after = [&](const std::vector<Exact_time>& ascending) -> std::optional<Exact_time> {
-    for (const Exact_time& r : ascending) {
+  // Roots made one at a time: a later one only when an earlier one is not after.
+  const auto first_after = [&](const auto& ascending) -> std::optional<Exact_time> {
+    for (std::size_t i = 0; i < ascending.size(); ++i) {
+      const Exact_time r = ascending[i];
       if (after.upper() < r.lower()) return r;  // the intervals decide, with no refinement
       if (r.upper() <= after.lower()) continue;
       // Against a rational, one exact sign of r's polynomial decides.
@@ -156,8 +168,8 @@ std::optional<Exact_time> Exact_kernel::next_root(const Poly& p, const Time& aft
     }
     return std::nullopt;
   };
-  if (zpoly::degree(q) == 1) return first_after({Exact_time(mpq_class(-q[0], q[1]))});
-  if (zpoly::degree(q) == 2) return first_after(quadratic_roots(q));
+  if (zpoly::degree(q) == 1) return first_after(std::vector{Exact_time(mpq_class(-q[0], q[1]))});
+  if (zpoly::degree(q) == 2) return first_after(Quadratic_roots(q));
   const mpq_class bound = zpoly::root_bound(q);
   const mpq_class lo = after.lower();  // a copy: comparing with `after` may refine it
   if (!(lo < bound)) return std::nullopt;
