@@ -2,6 +2,9 @@
 // kernel's field.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <vector>
+
 #include "kernels.hpp"
 
 using kvd::test::poly;
@@ -43,4 +46,37 @@ TEST_CASE("exact polynomial products evaluate as products of values", "[poly]") 
     CHECK((a - b)(t) == a(t) - b(t));
   }
   CHECK((a * b).degree() == 5);
+}
+
+// Integer coefficients take a path on the numerators alone
+// (src/kernel/poly_integer.cpp); a rational scale of one operand takes the
+// general path. Both must give the same polynomial, up to that scale.
+TEST_CASE("integer and rational polynomial arithmetic agree", "[poly]") {
+  using P = kvd::Poly<mpq_class>;
+  gmp_randclass rnd(gmp_randinit_default);
+  rnd.seed(20261126);
+  const auto below = [&](unsigned long n) { return mpz_class(rnd.get_z_range(n)).get_ui(); };
+  const auto random = [&](int degree, unsigned long bits) {
+    std::vector<mpq_class> c;
+    for (int i = 0; i <= degree; ++i) {
+      mpz_class z = rnd.get_z_bits(bits);
+      c.emplace_back(below(2) == 0 ? mpz_class(-z) : z);
+    }
+    return P(std::move(c));
+  };
+  const P half{mpq_class(1, 2)};
+  int rational = 0;
+  for (int i = 0; i < 500; ++i) {
+    const P a = random(static_cast<int>(below(5)), 1 + below(150));
+    const P b = random(static_cast<int>(below(5)), 1 + below(150));
+    const P ah = a * half;  // rational unless a is even
+    CHECK((a * b) * half == ah * b);
+    CHECK((a + b) * half == ah + b * half);
+    CHECK((a - b) * half == ah - b * half);
+    CHECK((a - a).is_zero());
+    rational += std::ranges::any_of(ah.coefficients(), [](const mpq_class& c) { return c.get_den() != 1; });
+    const P product = a * b;
+    for (int t = -3; t <= 3; ++t) CHECK(product(mpq_class(t)) == a(mpq_class(t)) * b(mpq_class(t)));
+  }
+  CHECK(rational > 300);  // the general path was taken on one side
 }

@@ -11,10 +11,21 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace kvd {
+
+namespace detail {
+// Rational polynomials whose coefficients are all integers (those the exact
+// kernel builds from its integer coordinates) multiplied and added on the
+// numerators alone: no gcd, no temporary. False, with `out` unspecified,
+// when a coefficient is not an integer (src/kernel/poly_integer.cpp).
+bool integer_product(const std::vector<mpq_class>& a, const std::vector<mpq_class>& b, std::vector<mpq_class>& out);
+// a += b (or -= b), for a at least as long as b.
+bool integer_add(std::vector<mpq_class>& a, const std::vector<mpq_class>& b, bool subtract);
+}  // namespace detail
 
 template <class FT>
 class Poly {
@@ -63,24 +74,18 @@ public:
     for (auto& x : r.c_) x = -x;
     return r;
   }
-  Poly& operator+=(const Poly& o) {
-    if (o.c_.size() > c_.size()) c_.resize(o.c_.size(), FT(0));
-    for (std::size_t i = 0; i < o.c_.size(); ++i) c_[i] += o.c_[i];
-    trim();
-    return *this;
-  }
-  Poly& operator-=(const Poly& o) {
-    if (o.c_.size() > c_.size()) c_.resize(o.c_.size(), FT(0));
-    for (std::size_t i = 0; i < o.c_.size(); ++i) c_[i] -= o.c_[i];
-    trim();
-    return *this;
-  }
+  Poly& operator+=(const Poly& o) { return add(o, false); }
+  Poly& operator-=(const Poly& o) { return add(o, true); }
   Poly& operator*=(const Poly& o) { return *this = *this * o; }
 
   friend Poly operator+(Poly a, const Poly& b) { return a += b; }
   friend Poly operator-(Poly a, const Poly& b) { return a -= b; }
   friend Poly operator*(const Poly& a, const Poly& b) {
     if (a.is_zero() || b.is_zero()) return Poly();
+    if constexpr (std::is_same_v<FT, mpq_class>) {
+      std::vector<FT> r;
+      if (detail::integer_product(a.c_, b.c_, r)) return Poly(std::move(r));
+    }
     std::vector<FT> r(a.c_.size() + b.c_.size() - 1, FT(0));
     for (std::size_t i = 0; i < a.c_.size(); ++i)
       for (std::size_t j = 0; j < b.c_.size(); ++j) r[i + j] += a.c_[i] * b.c_[j];
@@ -90,6 +95,15 @@ public:
   friend bool operator!=(const Poly& a, const Poly& b) { return !(a == b); }
 
 private:
+  Poly& add(const Poly& o, bool subtract) {
+    if (o.c_.size() > c_.size()) c_.resize(o.c_.size(), FT(0));
+    bool done = false;
+    if constexpr (std::is_same_v<FT, mpq_class>) done = detail::integer_add(c_, o.c_, subtract);
+    if (!done)
+      for (std::size_t i = 0; i < o.c_.size(); ++i) subtract ? c_[i] -= o.c_[i] : c_[i] += o.c_[i];
+    trim();
+    return *this;
+  }
   void trim() {
     while (!c_.empty() && c_.back() == FT(0)) c_.pop_back();
   }
