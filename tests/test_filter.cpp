@@ -98,6 +98,29 @@ TEST_CASE("values of about 1e-300 relative size get their exact sign", "[filter]
   }
 }
 
+// The exact kernel's integer coordinates give coefficients far beyond 2^64,
+// which the filter brings back by an exact power of two: it still decides a
+// sign far from zero, and still leaves one within an ulp of zero to exact
+// arithmetic.
+TEST_CASE("coefficients beyond 2^64 are filtered after an exact power-of-two scale", "[filter]") {
+  for (int e : {70, 300, 2000}) {
+    const P p = linear(-q(1, 3) * two_to(e), two_to(e)) + P(std::vector<mpq_class>{1});  // 2^e (t - 1/3) + 1
+    const auto far = both([&](const Exact_kernel& k) { return k.sign_at(p, Exact_time(q(1, 2))); });
+    CHECK(far.filtered == 1);
+    CHECK(far.exact == 1);
+    CHECK(far.by_filter);
+    const auto below = both([&](const Exact_kernel& k) { return k.sign_at(p, Exact_time(q(1, 4))); });
+    CHECK(below.filtered == -1);
+    CHECK(below.exact == -1);
+    CHECK(below.by_filter);
+    // At 1/3 the value is 1, 2^-e of the terms' size: beyond the filter.
+    const auto close = both([&](const Exact_kernel& k) { return k.sign_at(p, Exact_time(q(1, 3))); });
+    CHECK(close.filtered == 1);
+    CHECK(close.exact == 1);
+    CHECK_FALSE(close.by_filter);
+  }
+}
+
 TEST_CASE("roots 2^-110 apart are told apart, and signs between them are exact", "[filter]") {
   // (t^2 - 2) and (t^2 - 2 - 2^-110 t): two algebraic roots about 2^-112 apart.
   const P two = linear(-2, 0) + P(std::vector<mpq_class>{0, 0, 1});
