@@ -44,7 +44,8 @@ TEMPLATE_TEST_CASE("next_root skips roots of even multiplicity", "[kernel]", KVD
   r = k.next_root(with_roots<TestType>({1, 1, 1}), at(k, 0));
   REQUIRE(r);
   CHECK(k.compare(*r, at(k, 1)) == 0);
-  // t^2 + 1 and the constants have none.
+  // (t-3)^2, a zero discriminant, t^2 + 1 and the constants have none.
+  CHECK_FALSE(k.next_root(with_roots<TestType>({3, 3}), at(k, 0)));
   CHECK_FALSE(k.next_root(poly<TestType>({1, 0, 1}), at(k, -10)));
   CHECK_FALSE(k.next_root(poly<TestType>({3}), at(k, 0)));
   CHECK_FALSE(k.next_root(typename TestType::Poly(), at(k, 0)));

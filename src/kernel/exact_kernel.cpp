@@ -118,6 +118,8 @@ int Exact_kernel::sign_at(const Poly& p, const Time& t) const {
     }
   }
   ++statistics_->sign_at.exact;
+  if (t.is_rational())  // integer coefficients (most, kvd/kernel/poly.hpp) are read in place
+    if (const auto s = zpoly::sign_at_integral(p, t.rational())) return *s;
   const zpoly::ZPoly z = zpoly::to_zpoly(p);  // a positive multiple: same signs
   if (z.empty()) return 0;
   if (t.is_rational()) return zpoly::sign_at(z, t.rational());

@@ -23,6 +23,7 @@ Exact_time::Exact_time(const mpq_class& r) : rep_(std::make_shared<Rep>()) {
 }
 
 Exact_time Exact_time::of_canonical(mpq_class&& r) {
+  assert(sgn(r.get_den()) > 0 && gcd(r.get_num(), r.get_den()) == 1);
   Exact_time t(Of_rep{}, std::make_shared<Rep>());
   t.rep_->become_rational(std::move(r));
   return t;

@@ -47,8 +47,9 @@ std::optional<Interval> enclose(const Exact_time& t);
 // The coefficients of p times 2^-shift (exactly) as intervals, lowest degree
 // first; none when one is too large. A positive scale keeps every sign.
 std::optional<std::vector<Interval>> enclose(const Poly<mpq_class>& p, unsigned long shift = 0);
-// The least shift that brings every coefficient of the polynomials within
-// 2^50, well inside max_input so that values at an instant stay inside too.
+// A shift that brings every coefficient of the polynomials within 2^50
+// (the least, or one more), well inside max_input; values at an instant are
+// still checked.
 // The exact kernel's integer coordinates (scene_geometry.cpp) give points,
 // planes and certificate polynomials coefficients beyond 2^64; a point or
 // a plane takes one shift for its four polynomials, so that its dots keep

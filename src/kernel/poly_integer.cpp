@@ -19,13 +19,10 @@ bool integral(const std::vector<mpq_class>& v) {
 bool integer_product(const std::vector<mpq_class>& a, const std::vector<mpq_class>& b, std::vector<mpq_class>& out) {
   if (!integral(a) || !integral(b)) return false;
   out.assign(a.size() + b.size() - 1, mpq_class());
-  thread_local mpz_class sum;
   for (std::size_t k = 0; k < out.size(); ++k) {
-    sum = 0;
+    mpz_ptr sum = mpq_numref(out[k].get_mpq_t());  // the denominator stays 1
     const std::size_t first = k >= b.size() ? k - (b.size() - 1) : 0, last = std::min(k, a.size() - 1);
-    for (std::size_t i = first; i <= last; ++i)
-      mpz_addmul(sum.get_mpz_t(), a[i].get_num_mpz_t(), b[k - i].get_num_mpz_t());
-    mpz_swap(sum.get_mpz_t(), mpq_numref(out[k].get_mpq_t()));  // denominator stays 1
+    for (std::size_t i = first; i <= last; ++i) mpz_addmul(sum, a[i].get_num_mpz_t(), b[k - i].get_num_mpz_t());
   }
   return true;
 }

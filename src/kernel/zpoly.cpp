@@ -135,18 +135,34 @@ ZPoly odd_part(const ZPoly& p0) {
   return odd;
 }
 
-int sign_at(const ZPoly& p, const mpq_class& x) {
-  // p(n/d) d^deg = sum c_i n^i d^(deg-i), Horner in (n, d); d > 0 keeps the sign.
-  if (p.empty()) return 0;
+namespace {
+
+// p(n/d) d^deg = sum c_i n^i d^(deg-i), Horner in (n, d); d > 0 keeps the
+// sign. c(i) is the integer coefficient of t^i, of `size` coefficients.
+template <class Coefficient>
+int horner_sign(std::size_t size, const Coefficient& c, const mpq_class& x) {
+  if (size == 0) return 0;
   const mpz_class& n = x.get_num();
   const mpz_class& d = x.get_den();
-  mpz_class acc = p.back();
+  mpz_class acc = c(size - 1);
   mpz_class dpow = 1;
-  for (std::size_t k = p.size() - 1; k-- > 0;) {
+  for (std::size_t k = size - 1; k-- > 0;) {
     dpow *= d;
-    acc = acc * n + p[k] * dpow;
+    acc = acc * n + c(k) * dpow;
   }
   return sgn(acc);
+}
+
+}  // namespace
+
+int sign_at(const ZPoly& p, const mpq_class& x) {
+  return horner_sign(p.size(), [&](std::size_t i) -> const mpz_class& { return p[i]; }, x);
+}
+
+std::optional<int> sign_at_integral(const Poly<mpq_class>& p, const mpq_class& x) {
+  const auto& c = p.coefficients();
+  if (!std::ranges::all_of(c, [](const mpq_class& q) { return q.get_den() == 1; })) return std::nullopt;
+  return horner_sign(c.size(), [&](std::size_t i) -> const mpz_class& { return c[i].get_num(); }, x);
 }
 
 ZPoly compose_linear(const ZPoly& p, const mpz_class& a, const mpz_class& b, const mpz_class& c) {

@@ -15,7 +15,8 @@ struct Wall_filter::State {
   std::optional<Four> point, direction;
   std::unordered_map<const Plane4<P>*, std::optional<Four>> planes;
 
-  // The four polynomials at t; none when one cannot be enclosed.
+  // The four polynomials at t; none when the instant could not be enclosed
+  // or a value overflows.
   template <class Of>
   std::optional<Four> at(const Of& four) const {
     if (!t) return std::nullopt;
@@ -24,10 +25,10 @@ struct Wall_filter::State {
     const unsigned long shift = filter::shift_for(four.c);
     Four out;
     for (int k = 0; k < 4; ++k) {
-      const auto c = filter::enclose(four[k], shift);  // converts: outside the rounding scope
-      if (!c) return std::nullopt;
+      // Converts: outside the rounding scope. Within reach after the shift.
+      const auto c = filter::enclose(four[k], shift).value();
       const filter::Rounding_scope upward;
-      const auto v = filter::evaluate(*c, *t);
+      const auto v = filter::evaluate(c, *t);
       if (!v) return std::nullopt;
       out[static_cast<std::size_t>(k)] = *v;
     }

@@ -18,7 +18,7 @@
 namespace kvd::kinetic {
 
 // Certified bounds on a value at the instant; none when it could not be
-// enclosed (a coefficient too large for the filter).
+// enclosed (an instant the filter cannot enclose, or an overflow).
 struct Bounds {
   double lo = 0, hi = 0;
 };

@@ -19,15 +19,12 @@ namespace {
 
 using Motion = std::array<std::vector<Interval>, 4>;  // a point's coordinates, coefficients as intervals
 
-// The point scaled by one power of two (every sign stays), as intervals.
-std::optional<Motion> enclose(const Point4<Poly<mpq_class>>& p) {
+// The point scaled by one power of two (every sign stays), as intervals:
+// after the shift every coefficient is within the filter's reach.
+Motion enclose(const Point4<Poly<mpq_class>>& p) {
   const unsigned long shift = filter::shift_for(p.c);
   Motion m;
-  for (int k = 0; k < 4; ++k) {
-    auto c = filter::enclose(p[k], shift);
-    if (!c) return std::nullopt;
-    m[static_cast<std::size_t>(k)] = std::move(*c);
-  }
+  for (int k = 0; k < 4; ++k) m[static_cast<std::size_t>(k)] = filter::enclose(p[k], shift).value();
   return m;
 }
 
@@ -54,7 +51,6 @@ struct Vertex_hash {
 
 struct Classification_filter::State {
   const scene::Scene* scene;
-  bool usable = true;  // false when some motion coefficient is too large to filter
   std::vector<Motion> vertices;
   Motion x, z;
   // The positions on the last instant's interval (valid for every instant
@@ -122,17 +118,9 @@ Classification_filter::Classification_filter(const symbolic::Scene_geometry<Poly
     : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.scene = &motion.scene();
-  auto x = enclose(motion.x()), z = enclose(motion.z());
-  s.usable = x && z;
-  if (s.usable) s.x = std::move(*x), s.z = std::move(*z);
-  for (const auto& p : motion.vertices()) {
-    auto m = enclose(p);
-    if (!m) {
-      s.usable = false;
-      break;
-    }
-    s.vertices.push_back(std::move(*m));
-  }
+  s.x = enclose(motion.x());
+  s.z = enclose(motion.z());
+  for (const auto& p : motion.vertices()) s.vertices.push_back(enclose(p));
 }
 
 Classification_filter::~Classification_filter() = default;
@@ -140,7 +128,6 @@ Classification_filter::~Classification_filter() = default;
 int Classification_filter::side(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
                                 const Exact_time& t) {
   State& s = *state_;
-  if (!s.usable) return 0;
   const auto when = s.enclose(t);
   if (!when) return 0;
   s.move_to(*when);

@@ -9,7 +9,8 @@ namespace kvd::symbolic {
 
 namespace {
 
-// The same point with integer coefficients, primitive: scaled by the lcm of
+// The same point (a vertex, or the direction x or z) with integer
+// coefficients, primitive: scaled by the lcm of
 // its denominators over the gcd of its numerators. Every sign the kernel
 // decides is invariant under scaling a point by a positive factor
 // (kvd/geometry/plucker.hpp), and on integers GMP's rational arithmetic

@@ -43,7 +43,9 @@ private:
   Point4<R> x_, z_;
 };
 
-// The scene's motion over FT: every vertex, x and z as polynomials in t.
+// The scene's motion over FT: every vertex, x and z as polynomials in t,
+// with W > 0 at the start. For the exact field each point is scaled by a
+// positive rational to primitive integer coefficients (every sign the same).
 template <class FT>
 Scene_geometry<Poly<FT>> motion_geometry(const scene::Scene& s);
 // The same geometry at the instant t.

@@ -8,6 +8,7 @@
 
 #include <gmpxx.h>
 
+#include <optional>
 #include <vector>
 
 #include "kvd/kernel/poly.hpp"
@@ -43,6 +44,9 @@ ZPoly odd_part(const ZPoly& p);
 
 // Sign of p(x) for a rational x, computed with integers only.
 int sign_at(const ZPoly& p, const mpq_class& x);
+// The same for a rational polynomial whose coefficients are all integers
+// (checked: none when one is not), read in place with no conversion.
+std::optional<int> sign_at_integral(const Poly<mpq_class>& p, const mpq_class& x);
 // c^n p((a + b t) / c), n = degree(p): the substitution used by Descartes' rule.
 ZPoly compose_linear(const ZPoly& p, const mpz_class& a, const mpz_class& b, const mpz_class& c);
 // The sign variations of the coefficients, zeros skipped.
