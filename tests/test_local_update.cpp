@@ -39,23 +39,40 @@ std::pair<tree::Kvd_tree, std::size_t> moved(const predicates::Classifier<K>& c,
 }
 
 // A thesis figure on a hand-built scene: the tree at `from`, and the local
-// update of the batch failing at `at` (the sites of every certificate in
-// force at `from` failing then), which must give the tree a build gives just
-// after `at`: a different one, unless `changes` is false.
+// update of the batch failing at `at` (the certificates in force at `from`
+// failing then), confined as a run confines it, which must give the tree a
+// build gives just after `at`: a different one, unless `changes` is false.
+// With the nodes it touched and, of those, the nodes it changed.
 struct Figure {
   tree::Kvd_tree before, after;
+  std::size_t touched = 0, changed = 0;
+  int scope = -1;
 };
 Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at, bool changes = true) {
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);
   Figure f{tree::build(c, Exact_time(from)), {}};
+  const auto in_force = kinetic::reduced_certificates(c, f.before, Exact_time(from));
   std::set<SP> moving;
-  for (const auto& cert : kinetic::reduced_certificates(c, f.before, Exact_time(from)))
+  std::vector<const kinetic::Certificate<Exact_kernel::Poly>*> failing;
+  for (const auto& cert : in_force)
     for (const auto& q : cert.polys)
-      if (auto r = k.next_root(q, Exact_time(from)); r && k.compare(*r, Exact_time(at)) == 0)
+      if (auto r = k.next_root(q, Exact_time(from)); r && k.compare(*r, Exact_time(at)) == 0) {
         moving.merge(kinetic::moving_sites(s, cert));
+        failing.push_back(&cert);
+        break;
+      }
   REQUIRE(!moving.empty());
-  f.after = moved(c, f.before, Exact_time(at), moving).first;
+  f.after = f.before;
+  const tree::Tree_links links(f.after);
+  f.scope = kinetic::update_scope(s, links, f.after, failing);
+  tree::Tree_journal journal(f.after);
+  const auto cost =
+      kinetic::local_update(f.after, links, tree::Fragment_splitter<Exact_kernel>(c, Exact_time(at)), moving, f.scope,
+                            &journal);
+  f.touched = cost.nodes_touched;
+  f.changed = cost.nodes_changed;
+  CHECK(!cost.widened);
   CHECK(!tree::first_difference(f.after, tree::build(c, Exact_time(at))));
   CHECK(tree::first_difference(f.after, f.before).has_value() == changes);
   return f;
@@ -165,7 +182,7 @@ TEMPLATE_TEST_CASE("the journal undoes a local update exactly, node for node", "
       CAPTURE(symbolic::to_string(site));
       tree::Tree_journal journal(t);
       kinetic::local_update(t, tree::Tree_links(t), tree::Fragment_splitter<TestType>(c, at), kinetic::sites_with(s, site),
-                            &journal);
+                            -1, &journal);
       CHECK(!tree::first_difference(t, before));
       edited += !same();
       journal.undo();
@@ -244,6 +261,11 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
   // update moves v4's sites (its P-cut, its two edges, the mover) and the
   // crossed edge's sites; the result is written out here and equals a build.
   const Figure f = figure(load("two-triangles.json"), 1, 2);
+  // A VE failure is not confined (proofs/local_update.md, section 5): the
+  // update takes the whole tree. It changes nine nodes and touches sixteen.
+  CHECK(f.scope == -1);
+  CHECK(f.changed == 9);
+  CHECK(f.touched == 16);
   // v4 on the positive side of E(1), below the floor T(0).
   CHECK(f.before.describe() == R"(P(0) [SV(v0)]
   + P(1) [SV(v1)]
@@ -318,6 +340,15 @@ TEST_CASE("VV update of thesis Figs. 7.1 and 7.6: a vertex crossing the P-plane 
         + E(2) [SV(v2) SV(e2,P1) SE(e2)]
           + T(0) [SV(v1) SE(e1), SV(v2) SE(e2), SV(e2,P1) SE(P1,T0)]
 )");
+  // The update is confined to P(2)'s subtree (the P-cut crossed), and P(2)
+  // stays. It changes six nodes: the three pieces of e4, e5 and the mover
+  // under P(5) give way to three pieces on each side of P(2). It touches
+  // twelve: the mover's other pieces in P(2)'s subtree are dragged out and
+  // inserted again unchanged: twice the nodes changed.
+  REQUIRE(f.scope >= 0);
+  CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::P, 2});
+  CHECK(f.changed == 6);
+  CHECK(f.touched == 12);
   // After: P(5) has moved to P(2)'s positive side (Fig. 7.1(c)); its edges
   // e4 and e5 moved with it and were split by P(2) (Fig. 7.1(d)): their
   // pieces on the negative side stay under P(4), ending at the threads
@@ -403,31 +434,36 @@ TEST_CASE("E-update of thesis Fig. 7.10: an edge event detected with IV and II c
 }
 
 namespace {
-// The local update's simulation of s is the rebuild's, batch for batch: the
-// same batches at the same exact times with the same failures and the same
-// structure hash after each, every interval validated against a fresh build.
-// Returns the number of batches that changed the tree.
+// The local and reinsert updates' simulations of s are the rebuild's, batch
+// for batch: the same batches at the same exact times with the same failures
+// and the same structure hash after each, every interval validated against a
+// fresh build. Returns the number of batches that changed the tree.
 std::size_t same_simulation(const scene::Scene& s, std::size_t events) {
-  const auto local = run(s, kinetic::Update::local, events);
   const auto rebuild = run(s, kinetic::Update::rebuild, events);
-  CHECK(local.valid());
-  INFO(local.failure);
-  REQUIRE(local.batches.size() == rebuild.batches.size());
-  for (std::size_t i = 0; i < local.batches.size(); ++i) {
-    CHECK(Exact_kernel().compare(local.batches[i].time, rebuild.batches[i].time) == 0);
-    CHECK(local.batches[i].failing == rebuild.batches[i].failing);
-    CHECK(local.batches[i].structure == rebuild.batches[i].structure);
-    // Both keep the certificates of the nodes the batch left alone.
-    CHECK(local.batches[i].certificates == rebuild.batches[i].certificates);
-    CHECK(local.batches[i].certificates_recomputed == rebuild.batches[i].certificates_recomputed);
+  std::size_t changed = 0;
+  for (const kinetic::Update update : {kinetic::Update::local, kinetic::Update::reinsert}) {
+    const auto local = run(s, update, events);
+    INFO((update == kinetic::Update::local ? "local" : "reinsert"));
+    CHECK(local.valid());
+    INFO(local.failure);
+    REQUIRE(local.batches.size() == rebuild.batches.size());
+    for (std::size_t i = 0; i < local.batches.size(); ++i) {
+      CHECK(Exact_kernel().compare(local.batches[i].time, rebuild.batches[i].time) == 0);
+      CHECK(local.batches[i].failing == rebuild.batches[i].failing);
+      CHECK(local.batches[i].structure == rebuild.batches[i].structure);
+      // Both keep the certificates of the nodes the batch left alone.
+      CHECK(local.batches[i].certificates == rebuild.batches[i].certificates);
+      CHECK(local.batches[i].certificates_recomputed == rebuild.batches[i].certificates_recomputed);
+    }
+    CHECK(local.structure_hash == rebuild.structure_hash);
+    CHECK(local.collision == rebuild.collision);
+    changed = static_cast<std::size_t>(std::ranges::count_if(local.batches, [](const auto& b) { return b.changed; }));
   }
-  CHECK(local.structure_hash == rebuild.structure_hash);
-  CHECK(local.collision == rebuild.collision);
-  return static_cast<std::size_t>(std::ranges::count_if(local.batches, [](const auto& b) { return b.changed; }));
+  return changed;
 }
 }  // namespace
 
-TEST_CASE("local and rebuild updates give the same simulation", "[local][kinetic]") {
+TEST_CASE("local, reinsert and rebuild updates give the same simulation", "[local][kinetic]") {
   // Random, generated and degenerate scenes (coplanar boxes moving along one
   // axis, lockstep motions, a shared y, a vertical edge, z on a plane).
   for (const char* name : {"random-20.json", "uniform-scale-25.json", "uniform-density-25.json", "boxes.json", "rotor.json",
@@ -438,7 +474,7 @@ TEST_CASE("local and rebuild updates give the same simulation", "[local][kinetic
   }
 }
 
-TEST_CASE("local and rebuild updates agree on the stiff scenes and twenty generated ones", "[local][kinetic][slow]") {
+TEST_CASE("local, reinsert and rebuild updates agree on the stiff scenes and twenty generated ones", "[local][kinetic][slow]") {
   // The stiff scenes (close, simultaneous and tangential events, high
   // degrees, rational rotations, wide ranges of scale and speed).
   for (const char* name : {"close-events", "high-degree", "near-degenerate", "rational-rotation", "simultaneous",

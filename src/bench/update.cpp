@@ -31,6 +31,8 @@ const char* const update_help =
     "linearly), simulated for N certificate failures (default 100), reduced\n"
     "set, no validation, with\n"
     "  local                  the exact kernel and the local update\n"
+    "  reinsert               the exact kernel, every piece of a moving site\n"
+    "                         dragged out and inserted again from the root\n"
     "  local, double          the double kernel and the local update\n"
     "  rebuild                the exact kernel rebuilding the tree (sizes up to\n"
     "                         --rebuild-up-to, default 800)\n"
@@ -38,7 +40,7 @@ const char* const update_help =
     "                         again after each batch (sizes up to\n"
     "                         --upkeep-all-up-to, default 100)\n"
     "Reports mean, median and max ms per batch (everything from the failure to\n"
-    "the next queue minimum), the nodes the local update touched and, of\n"
+    "the next queue minimum), the nodes the local and reinsert updates touched and, of\n"
     "those, the nodes whose cut or fragment changed, the certificates made,\n"
     "the peak memory of the process, the growth exponent of the mean in N\n"
     "(least squares on log-log), and whether the exact runs of a size end in\n"
@@ -60,6 +62,7 @@ struct Configuration {
 };
 constexpr Configuration configurations[] = {
     {"local", true, kinetic::Update::local, kinetic::Upkeep::local},
+    {"reinsert", true, kinetic::Update::reinsert, kinetic::Upkeep::local},
     {"local, double", false, kinetic::Update::local, kinetic::Upkeep::local},
     {"rebuild", true, kinetic::Update::rebuild, kinetic::Upkeep::local},
     {"local, --upkeep all", true, kinetic::Update::local, kinetic::Upkeep::all},
@@ -68,7 +71,7 @@ constexpr Configuration configurations[] = {
 
 bool wanted(const Config& c, const Configuration& conf, std::size_t n) {
   if (conf.upkeep == kinetic::Upkeep::all) return n <= c.upkeep_all_up_to;
-  return conf.update == kinetic::Update::local || n <= c.rebuild_up_to;
+  return conf.update != kinetic::Update::rebuild || n <= c.rebuild_up_to;
 }
 
 template <class K>

@@ -1,6 +1,7 @@
 #include "kvd/detail/kinetic/local_update.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <tuple>
 
 #include "kvd/tree/compare.hpp"
@@ -27,12 +28,21 @@ void vertex_sites(const scene::Scene& s, std::size_t v, Sites& out) {
   for (std::size_t e : s.vertex_edges[v]) edge_sites(s, e, out);
 }
 
-// The sites through a symbolic vertex: those of every feature defining it.
-void sites_of(const scene::Scene& s, const SV& v, Sites& out) {
+// Which sites of a feature's definition: those a failure moves, or all it names.
+enum class Reach { moved, named };
+
+// The sites through a symbolic vertex: those of every feature defining it,
+// except that an intersection point (edge e meeting the E-plane of e') moves
+// e's sites alone (thesis 7.3.2, E-update: the nodes of the edge whose
+// intersection moved); e' is only named.
+void sites_of(const scene::Scene& s, const SV& v, Reach reach, Sites& out) {
   const auto& id = v.ids;
   switch (v.kind) {
     case SV::Kind::endpoint: vertex_sites(s, id[0], out); break;
-    case SV::Kind::intersection: edge_sites(s, id[0], out), edge_sites(s, id[1], out); break;
+    case SV::Kind::intersection:
+      edge_sites(s, id[0], out);
+      if (reach == Reach::named) edge_sites(s, id[1], out);
+      break;
     case SV::Kind::thread: edge_sites(s, id[0], out), vertex_sites(s, id[1], out); break;
     case SV::Kind::internal_intersection:
       edge_sites(s, id[0], out), edge_sites(s, id[1], out), out.insert({SP::Kind::T, id[2]});
@@ -91,6 +101,45 @@ std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& jou
   return static_cast<std::size_t>(std::unique(slots.begin(), slots.end()) - slots.begin());
 }
 
+// The failures whose changed signs all lie in the subtree of the highest
+// node above theirs cut by a moving site (proofs/local_update.md, section 5):
+// a point crossing a P-plane of the pencil. A VE failure can change a sign
+// above it (the section's counterexample); the others are collisions or
+// take the whole tree too.
+bool confined(Certificate_type t) {
+  return t == Certificate_type::VV || t == Certificate_type::IV || t == Certificate_type::II;
+}
+
+// Whether a is n or one of n's ancestors.
+bool ancestor_or_self(const tree::Tree_links& links, int a, int n) {
+  for (; n >= 0; n = links.parent(n))
+    if (n == a) return true;
+  return false;
+}
+
+// The piece of `site` inside the cell of `scope`, cut down the scope's
+// proper ancestors (`path`, root first): an empty piece when the site cuts
+// one of them or misses the cell, and no answer when it meets the cell of
+// an ancestor of lower priority, where the tree in force would have it cut
+// already (a sign above the scope changed).
+template <class K>
+std::optional<tree::Piece> piece_in_cell(const tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split, const SP& site,
+                                         const std::vector<int>& path, int scope) {
+  const scene::Scene& s = split.classifier().motion().scene();
+  const std::size_t priority = tree::cut_priority(s, site);
+  tree::Piece piece = tree::site_fragment(s, site);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const tree::Node& b = t.nodes[static_cast<std::size_t>(path[i])];
+    if (b.cut == site) return tree::Piece{};
+    if (tree::cut_priority(s, b.cut) > priority) return std::nullopt;
+    const int child = i + 1 < path.size() ? path[i + 1] : scope;
+    auto [neg, pos] = split.split(*piece, b.cut, site);
+    piece = b.right == child ? std::move(pos) : std::move(neg);
+    if (!piece) return piece;
+  }
+  return piece;
+}
+
 }  // namespace
 
 std::set<SP> sites_with(const scene::Scene& s, const SP& site) {
@@ -101,19 +150,71 @@ std::set<SP> sites_with(const scene::Scene& s, const SP& site) {
   return out;
 }
 
+namespace {
+
+// The sites a failure moves (reach moved) or names (reach named). A VV
+// failure moves the vertex's sites, not the P-cut it crosses (thesis Fig. 7.8,
+// V-update: only the point node moves; proofs/local_update.md, section 4).
+template <class Poly>
+Sites sites_of(const scene::Scene& s, const Certificate<Poly>& c, Reach reach) {
+  Sites out;
+  for (const SV& v : c.vertices) sites_of(s, v, reach, out);
+  if (reach == Reach::moved && c.key.type == Certificate_type::VV) return out;
+  for (const SP& p : c.planes) sites_of(s, p, out);
+  return out;
+}
+
+}  // namespace
+
 template <class Poly>
 std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing) {
-  Sites out;
-  for (const SV& v : failing.vertices) sites_of(s, v, out);
-  for (const SP& p : failing.planes) sites_of(s, p, out);
-  return out;
+  return sites_of(s, failing, Reach::moved);
+}
+
+template <class Poly>
+int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
+                 const std::vector<const Certificate<Poly>*>& failing) {
+  // Each certificate's highest node: its own, or an ancestor cut by a site it names.
+  std::vector<int> tops;
+  for (const Certificate<Poly>* c : failing) {
+    if (!confined(c->key.type)) return -1;
+    const Sites named = sites_of(s, *c, Reach::named);
+    int top = c->node;
+    for (int n = c->node; n >= 0; n = links.parent(n))
+      if (named.contains(t.nodes[static_cast<std::size_t>(n)].cut)) top = n;
+    tops.push_back(top);
+  }
+  if (tops.empty()) return -1;
+  int scope = tops.front();
+  for (int n : tops)
+    while (!ancestor_or_self(links, scope, n)) scope = links.parent(scope);
+  return scope;
 }
 
 template <class K>
 Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
-                         const std::set<SP>& moving, tree::Tree_journal* journal) {
+                         const std::set<SP>& moving, int scope, tree::Tree_journal* journal) {
   const scene::Scene& s = split.classifier().motion().scene();
-  // The nodes of moving sites, with where each hangs.
+  const bool asked = scope >= 0;
+  // Each moving site's piece inside the scope's cell, before any edit: the
+  // ancestors' cuts are not edited, and a site meeting the cell of a
+  // lower-priority ancestor widens the scope to the whole tree.
+  std::vector<std::pair<SP, tree::Fragment>> pieces;
+  if (asked) {
+    std::vector<int> path;  // the scope's proper ancestors, root first
+    for (int n = links.parent(scope); n >= 0; n = links.parent(n)) path.push_back(n);
+    std::ranges::reverse(path);
+    for (const SP& site : moving) {
+      const auto piece = piece_in_cell(t, split, site, path, scope);
+      if (!piece) {
+        scope = -1;
+        pieces.clear();
+        break;
+      }
+      if (*piece) pieces.emplace_back(site, std::move(**piece));
+    }
+  }
+  // The nodes of moving sites in the scope, with where each hangs.
   struct Held {
     std::size_t priority;
     int node, parent;
@@ -123,6 +224,7 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   for (const SP& site : moving) {
     const std::size_t priority = tree::cut_priority(s, site);
     for (int n : links.holding(site)) {
+      if (scope >= 0 && !ancestor_or_self(links, scope, n)) continue;
       const int parent = links.parent(n);
       held.push_back({priority, n, parent, parent >= 0 && t.nodes[static_cast<std::size_t>(parent)].right == n});
     }
@@ -131,29 +233,50 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   // Pieces of one site lie in disjoint subtrees; slots order them.
   std::sort(held.begin(), held.end(),
             [](const Held& a, const Held& b) { return std::tie(b.priority, a.node) < std::tie(a.priority, b.node); });
-  tree::Tree_editor<K> editor(t, split, journal);
+  // The place the scope's subtree hangs from, kept through the drags (its
+  // parent is outside the scope).
+  const int above = scope >= 0 ? links.parent(scope) : -1;
+  const bool on_right = above >= 0 && t.nodes[static_cast<std::size_t>(above)].right == scope;
   std::vector<int> changed;
-  for (const Held& h : held) {
-    const int replacement = editor.drag(h.node);
-    if (h.parent >= 0 && journal) journal->save(h.parent);
-    if (h.parent < 0) t.root = replacement;
-    else if (h.right) t.nodes[static_cast<std::size_t>(h.parent)].right = replacement;
-    else t.nodes[static_cast<std::size_t>(h.parent)].left = replacement;
-    if (h.parent >= 0) changed.push_back(h.parent);
+  const auto hang = [&](int parent, bool right, int sub) {
+    if (parent < 0) {
+      t.root = sub;
+      return;
+    }
+    tree::Node& p = t.nodes[static_cast<std::size_t>(parent)];
+    if ((right ? p.right : p.left) == sub) return;
+    if (journal) journal->save(parent);
+    (right ? t.nodes[static_cast<std::size_t>(parent)].right : t.nodes[static_cast<std::size_t>(parent)].left) = sub;
+    changed.push_back(parent);
+  };
+  tree::Tree_editor<K> editor(t, split, journal);
+  for (const Held& h : held) hang(h.parent, h.right, editor.drag(h.node));
+  if (scope >= 0) {
+    const auto hung = [&] {
+      if (above < 0) return t.root;
+      const tree::Node& p = t.nodes[static_cast<std::size_t>(above)];
+      return on_right ? p.right : p.left;
+    };
+    std::ranges::sort(pieces, {}, [&](const auto& p) { return tree::cut_priority(s, p.first); });
+    for (auto& [site, piece] : pieces) hang(above, on_right, editor.insert(hung(), site, std::move(piece)));
+  } else {
+    std::vector<SP> order(moving.begin(), moving.end());
+    tree::sort_by_priority(s, order);
+    for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
   }
-  std::vector<SP> order(moving.begin(), moving.end());
-  tree::sort_by_priority(s, order);
-  for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
   const std::vector<int> touched = editor.touched_nodes();
   changed.insert(changed.end(), touched.begin(), touched.end());
   const std::size_t differ = journal ? nodes_changed(t, *journal, changed) : 0;
-  return {moving.size(), touched.size(), differ, std::move(changed)};
+  return {moving.size(), touched.size(), differ, std::move(changed), scope, asked && scope < 0};
 }
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \
   template std::set<SP> moving_sites<K::Poly>(const scene::Scene&, const Certificate<K::Poly>&);            \
+  template int update_scope<K::Poly>(const scene::Scene&, const tree::Tree_links&, const tree::Kvd_tree&,    \
+                                     const std::vector<const Certificate<K::Poly>*>&);                     \
   template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Tree_links&,                          \
-                                       const tree::Fragment_splitter<K>&, const std::set<SP>&, tree::Tree_journal*);
+                                       const tree::Fragment_splitter<K>&, const std::set<SP>&, int,        \
+                                       tree::Tree_journal*);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_LOCAL_UPDATE)
 
 }  // namespace kvd::kinetic

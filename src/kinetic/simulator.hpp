@@ -241,16 +241,21 @@ private:
 
   bool full() const { return o_.certificates == Certificate_set::full; }
   // The full set is what a build evaluates: it always takes the rebuild.
-  bool local() const { return o_.update == Update::local && !full(); }
+  bool local() const { return o_.update != Update::rebuild && !full(); }
 
   // The tree in force changed in place by the local update of the batch
   // failing at `at`, and moved into the result. A floating-point kernel whose update fails repairs with the
   // recovery's builds.
   Tree_after update_locally(Time& at, Batch<Time>& batch) {
     std::set<symbolic::Symbolic_plane> moving;
-    for (std::size_t id : queue_->first()) moving.merge(moving_sites(scene_, in_force_[id]));
+    std::vector<const Certificate<typename K::Poly>*> failing;
+    for (std::size_t id : queue_->first()) {
+      moving.merge(moving_sites(scene_, in_force_[id]));
+      failing.push_back(&in_force_[id]);
+    }
+    const int scope = o_.update == Update::local ? update_scope(scene_, links_, current_, failing) : -1;
     if (validator_.keeps_last()) before_ = current_;  // the update edits the tree in force
-    auto updated = builder_.update(current_, links_, at, moving);
+    auto updated = builder_.update(current_, links_, at, moving, scope);
     if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
       batch.nodes_touched = cost->nodes_touched;

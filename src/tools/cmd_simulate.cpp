@@ -20,7 +20,7 @@ const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
     "                    [--kernel exact|double|mpfr:BITS] [--epsilon E] [--no-filter]\n"
     "                    [--certificates reduced|full] [--queue tree|heap]\n"
-    "                    [--update local|rebuild] [--upkeep local|all]\n"
+    "                    [--update local|reinsert|rebuild] [--upkeep local|all]\n"
     "                    [--collisions reverse|stop]\n"
     "                    [--trace FILE] [--list] [--json]\n"
     "\n"
@@ -34,8 +34,12 @@ const char* const simulate_help =
     "8.5-8.7; on a long run, progress goes to stderr every two seconds.\n"
     "\n"
     "  --update U        local (default): the thesis's local update (thesis 7.3),\n"
-    "                    which moves only the sites of the failing certificates'\n"
-    "                    features; rebuild: the reference, a build just after each batch\n"
+    "                    which moves the sites of the failing certificates'\n"
+    "                    features within the subtree of the nodes that decided\n"
+    "                    them; reinsert: the same sites dragged out of the whole\n"
+    "                    tree and inserted again from the root; rebuild: the\n"
+    "                    reference, a build just after each batch (segment\n"
+    "                    scenes: local or rebuild)\n"
     "  --upkeep U        local (default): after a batch only the nodes whose\n"
     "                    cut, fragment or ancestors changed, or that hold a failed\n"
     "                    certificate, make their reduced certificates again; all:\n"
@@ -201,7 +205,10 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
   const Update_costs u = update_costs(sim);
   const char* set = o.certificates == kinetic::Certificate_set::reduced ? "reduced" : "full";
   const char* queue = o.queue == kinetic::Queue_kind::tree ? "tree" : "heap";
-  const char* update = o.update == kinetic::Update::local ? "local" : "rebuild";
+  const char* update = o.update == kinetic::Update::local      ? "local"
+                       : o.update == kinetic::Update::reinsert ? "reinsert"
+                                                               : "rebuild";
+  const bool local = o.update != kinetic::Update::rebuild;
   const Touched touched = nodes_touched(sim);
   const Recomputed recomputed = certificates_recomputed(sim);
   const std::size_t collisions = sim.motion_changes.size() + (sim.collision ? 1 : 0);
@@ -219,7 +226,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                          {"certificates_recomputed", e.certificates_recomputed}});
     Json changes = Json::array();
     for (const auto& c : sim.motion_changes) changes.push_back(motion_change_json(k, c));
-    const Json touched_json = o.update == kinetic::Update::local
+    const Json touched_json = local
                                   ? Json{{"median", decimal(fixed(touched.median, 1))},
                                          {"changed_median", decimal(fixed(touched.changed_median, 1))},
                                          {"below_10_share", decimal(fixed(touched.below_10_share, 3))}}
@@ -295,7 +302,7 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << "construction:  " << fixed(1000 * sim.construction_seconds, 3) << " ms\n"
               << "update (ms):   average " << fixed(u.average, 3) << ", max " << fixed(u.max, 3) << ", stddev "
               << fixed(u.stddev, 3) << ", median " << fixed(u.median, 3) << " (tree " << fixed(u.tree_median, 3) << ")\n"
-              << (o.update == kinetic::Update::local
+              << (local
                       ? "nodes touched: median " + fixed(touched.median, 1) + " per batch, " +
                             fixed(100 * touched.below_10_share, 1) + "% of batches below 10\n"
                       : std::string())
@@ -353,7 +360,8 @@ int simulate(Args& args) {
           "simulate", a, args.value(a), {{"tree", kinetic::Queue_kind::tree}, {"heap", kinetic::Queue_kind::heap}});
     else if (a == "--update")
       update = choice_option<kinetic::Update>(
-          "simulate", a, args.value(a), {{"local", kinetic::Update::local}, {"rebuild", kinetic::Update::rebuild}});
+          "simulate", a, args.value(a),
+          {{"local", kinetic::Update::local}, {"reinsert", kinetic::Update::reinsert}, {"rebuild", kinetic::Update::rebuild}});
     else if (a == "--upkeep")
       o.upkeep = choice_option<kinetic::Upkeep>(
           "simulate", a, args.value(a), {{"local", kinetic::Upkeep::local}, {"all", kinetic::Upkeep::all}});
@@ -362,7 +370,7 @@ int simulate(Args& args) {
     else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
     else if (!sa.take(args, a)) args.unknown(a);
   }
-  if (o.certificates == kinetic::Certificate_set::full && update == kinetic::Update::local)
+  if (o.certificates == kinetic::Certificate_set::full && update && update != kinetic::Update::rebuild)
     throw Usage_error("kvd simulate: the full certificate set needs --update rebuild");
   o.update = update.value_or(o.certificates == kinetic::Certificate_set::full ? kinetic::Update::rebuild
                                                                             : kinetic::Update::local);
@@ -372,6 +380,8 @@ int simulate(Args& args) {
     refuse_triangle_flags("simulate", triangle_only);
     if (o.validate == kinetic::Validation::end)
       throw Usage_error("kvd simulate: --validate end: a segment scene takes every or none");
+    if (update == kinetic::Update::reinsert)
+      throw Usage_error("kvd simulate: --update reinsert: a segment scene takes local or rebuild");
     return segment_simulate(sa, text,
                             {o.max_events, o.until, o.validate == kinetic::Validation::every, kernel, epsilon, filter, list,
                              update == kinetic::Update::rebuild ? segments::Segment_update::rebuild

@@ -143,8 +143,11 @@ enum class Validation { every, end, none };
 enum class Collisions { reverse, stop };
 
 // How a batch changes the tree: by the local update of thesis 7.3
-// (detail/kinetic/local_update.hpp), or by the reference rebuild.
-enum class Update { local, rebuild };
+// (detail/kinetic/local_update.hpp) confined to the subtree of the failing
+// signs, by the same update over the whole tree (every piece of every
+// moving site dragged out and inserted again from the root), or by the
+// reference rebuild.
+enum class Update { local, reinsert, rebuild };
 
 // Which nodes make their certificates again after a batch: those whose
 // inputs changed or that hold a failed certificate (detail/kinetic/reduced_upkeep.hpp),

@@ -55,13 +55,34 @@ struct Update_cost {
   // node: what the structure hash and the links must see again
   // (Subtree_hashes::update, Tree_links::update).
   std::vector<int> changed;
+  int scope = -1;        // the node whose subtree the update re-cut, -1 the whole tree
+  bool widened = false;  // a scope was asked for and the whole tree taken
 };
+
+// The subtree a batch is confined to (proofs/local_update.md, section 5):
+// the lowest node whose subtree holds, for every failing certificate, the
+// node holding it and every ancestor of that node cut by a site the
+// certificate moves. -1 (the whole tree) when a failure is not a VV, IV or
+// II one, or for no failure.
+template <class Poly>
+int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
+                 const std::vector<const Certificate<Poly>*>& failing);
 
 // `links` are t's: they find the nodes of the moving sites without a walk
 // of the tree. With a journal, every node is saved there before its first
 // change, so that a failed update can be undone.
+//
+// With `scope` a node, only the nodes of moving sites in its subtree are
+// dragged, and each moving site is inserted again with its piece inside the
+// scope's cell, at the scope's place (`--update local`). A site that cuts a
+// node above the scope is left alone; a site found meeting the cell of a
+// lower-priority node above the scope means that the batch changed a sign
+// above it, and the update takes the whole tree (Update_cost::widened). With
+// `scope` -1 every node of a moving site is dragged and every site inserted
+// from the root (`--update reinsert`).
 template <class K>
 Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
-                         const std::set<symbolic::Symbolic_plane>& moving, tree::Tree_journal* journal = nullptr);
+                         const std::set<symbolic::Symbolic_plane>& moving, int scope = -1,
+                         tree::Tree_journal* journal = nullptr);
 
 }  // namespace kvd::kinetic
