@@ -243,10 +243,10 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
       t.root = sub;
       return;
     }
-    tree::Node& p = t.nodes[static_cast<std::size_t>(parent)];
-    if ((right ? p.right : p.left) == sub) return;
+    int& child = right ? t.nodes[static_cast<std::size_t>(parent)].right : t.nodes[static_cast<std::size_t>(parent)].left;
+    if (child == sub) return;
     if (journal) journal->save(parent);
-    (right ? t.nodes[static_cast<std::size_t>(parent)].right : t.nodes[static_cast<std::size_t>(parent)].left) = sub;
+    child = sub;
     changed.push_back(parent);
   };
   tree::Tree_editor<K> editor(t, split, journal);
