@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -47,8 +48,13 @@ struct Figure {
   tree::Kvd_tree before, after;
   std::size_t touched = 0, changed = 0;
   int scope = -1;
+  bool widened = false;
 };
-Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at, bool changes = true) {
+// `scope`: the subtree to confine the update to, in place of the one the
+// failing certificates give (a node's cut: the first node in pre-order cut
+// by it).
+Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at, bool changes = true,
+              std::optional<SP> scope = std::nullopt) {
   const Exact_kernel k;
   const predicates::Classifier<Exact_kernel> c(k, s);
   Figure f{tree::build(c, Exact_time(from)), {}};
@@ -65,14 +71,15 @@ Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at,
   REQUIRE(!moving.empty());
   f.after = f.before;
   const tree::Tree_links links(f.after);
-  f.scope = kinetic::update_scope(s, links, f.after, failing);
+  f.scope = scope ? *links.holding(*scope).begin() : kinetic::update_scope(s, links, f.after, failing);
   tree::Tree_journal journal(f.after);
   const auto cost =
       kinetic::local_update(f.after, links, tree::Fragment_splitter<Exact_kernel>(c, Exact_time(at)), moving, f.scope,
                             &journal);
   f.touched = cost.nodes_touched;
   f.changed = cost.nodes_changed;
-  CHECK(!cost.widened);
+  f.widened = cost.widened;
+  CHECK(f.widened == scope.has_value());
   CHECK(!tree::first_difference(f.after, tree::build(c, Exact_time(at))));
   CHECK(tree::first_difference(f.after, f.before).has_value() == changes);
   return f;
@@ -261,11 +268,13 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
   // update moves v4's sites (its P-cut, its two edges, the mover) and the
   // crossed edge's sites; the result is written out here and equals a build.
   const Figure f = figure(load("two-triangles.json"), 1, 2);
-  // A VE failure is not confined (proofs/local_update.md, section 5): the
-  // update takes the whole tree. It changes nine nodes and touches sixteen.
-  CHECK(f.scope == -1);
+  // v4 is not a vertex of e1's triangle, so the update is confined to
+  // E(1)'s subtree (proofs/local_update.md, section 5). It changes nine
+  // nodes and touches thirteen (sixteen over the whole tree).
+  REQUIRE(f.scope >= 0);
+  CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::E, 1});
   CHECK(f.changed == 9);
-  CHECK(f.touched == 16);
+  CHECK(f.touched == 13);
   // v4 on the positive side of E(1), below the floor T(0).
   CHECK(f.before.describe() == R"(P(0) [SV(v0)]
   + P(1) [SV(v1)]
@@ -312,14 +321,27 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
 )");
 }
 
-TEST_CASE("VV update of thesis Figs. 7.1 and 7.6: a vertex crossing the P-plane of an ancestor vertex", "[local]") {
-  // The mover, beside the floor, translates along y; its top vertex v5
-  // crosses P(2), the plane y = 4 of the floor's vertex v2, at t = 3.
-  const Figure f = figure(scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 10}, "objects": [
+namespace {
+// The mover, beside the floor, translates along y; its top vertex v5
+// crosses P(2), the plane y = 4 of the floor's vertex v2, at t = 3.
+scene::Scene vv_scene() {
+  return scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 10}, "objects": [
     {"vertices": [[-4,-4,0],[4,-4,0],[0,4,0]], "triangles": [[0,1,2]]},
     {"vertices": [[5,0,1],[6,0,1],[5,1,2]], "triangles": [[0,1,2]], "motion": {"translation": [0,[0,1],0]}}]})",
-                                                  "vv.json"),
-                          1, 3);
+                           "vv.json");
+}
+}  // namespace
+
+TEST_CASE("a confined update that finds a sign above its subtree changed takes the whole tree", "[local]") {
+  // Confined to P(5)'s own subtree, below the P(2) it crosses: P(5)'s piece
+  // (its vertex) no longer meets that cell, so the update widens, and still
+  // gives the build's tree (checked in figure()).
+  const Figure f = figure(vv_scene(), 1, 3, true, SP{SP::Kind::P, 5});
+  CHECK(f.widened);
+}
+
+TEST_CASE("VV update of thesis Figs. 7.1 and 7.6: a vertex crossing the P-plane of an ancestor vertex", "[local]") {
+  const Figure f = figure(vv_scene(), 1, 3);
   // Before: the mover's nodes on P(2)'s negative side, under E(1).
   CHECK(f.before.describe() == R"(P(0) [SV(v0)]
   + P(1) [SV(v1)]
@@ -386,6 +408,9 @@ TEST_CASE("E-update of thesis Fig. 7.10: an edge event detected with IV and II c
     {"vertices": [[1,-2,1],[4,-2,1],[2,-1,2]], "triangles": [[0,1,2]], "motion": {"translation": [0,[0,"1/2"],0]}}]})",
                                                   "iv.json"),
                           4, 8);
+  // The IV and II failures confine the update to E(1)'s subtree.
+  REQUIRE(f.scope >= 0);
+  CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::E, 1});
   // Before: v3 is beyond E(1), under the floor's T(0); e3 and e5 are split
   // by E(1) at the intersection points SV(e3,E1) and SV(e5,E1).
   CHECK(f.before.describe() == R"(P(0) [SV(v0)]
@@ -440,7 +465,6 @@ namespace {
 // fresh build. Returns the number of batches that changed the tree.
 std::size_t same_simulation(const scene::Scene& s, std::size_t events) {
   const auto rebuild = run(s, kinetic::Update::rebuild, events);
-  std::size_t changed = 0;
   for (const kinetic::Update update : {kinetic::Update::local, kinetic::Update::reinsert}) {
     const auto local = run(s, update, events);
     INFO((update == kinetic::Update::local ? "local" : "reinsert"));
@@ -457,9 +481,8 @@ std::size_t same_simulation(const scene::Scene& s, std::size_t events) {
     }
     CHECK(local.structure_hash == rebuild.structure_hash);
     CHECK(local.collision == rebuild.collision);
-    changed = static_cast<std::size_t>(std::ranges::count_if(local.batches, [](const auto& b) { return b.changed; }));
   }
-  return changed;
+  return static_cast<std::size_t>(std::ranges::count_if(rebuild.batches, [](const auto& b) { return b.changed; }));
 }
 }  // namespace
 
@@ -609,6 +632,9 @@ TEST_CASE("edge events detected by II certificates (thesis Fig. 7.11): an edge p
   REQUIRE(b.time.is_rational());
   CHECK(b.time.rational() == test::q(2224886, 11466781));
   const Figure f = figure(s, kinetic::rational_between(sim.batches[3].time, b.time), b.time.rational());
+  // The II failures confine the update to E(3)'s subtree.
+  REQUIRE(f.scope >= 0);
+  CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::E, 3});
   // Before: e11's piece from E(12) to E(3) is on E(3)'s negative side, in
   // the cell below e12's piece that ends at E(3).
   CHECK(below(f.before, SP{SP::Kind::E, 3}) == R"(E(3) [SV(v3) SV(v4) SE(e3)]

@@ -101,13 +101,30 @@ std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& jou
   return static_cast<std::size_t>(std::unique(slots.begin(), slots.end()) - slots.begin());
 }
 
-// The failures whose changed signs all lie in the subtree of the highest
-// node above theirs cut by a moving site (proofs/local_update.md, section 5):
-// a point crossing a P-plane of the pencil. A VE failure can change a sign
-// above it (the section's counterexample); the others are collisions or
-// take the whole tree too.
-bool confined(Certificate_type t) {
-  return t == Certificate_type::VV || t == Certificate_type::IV || t == Certificate_type::II;
+// Whether a failure's changed signs all lie in the subtree of the highest
+// node above its own cut by a site it names (proofs/local_update.md, section
+// 5): a point crossing a P-plane of the pencil (VV, IV, II), or a vertex
+// crossing the E-plane of an edge of another triangle. A vertex of one of
+// the edge's own triangles crossing its E-plane is that triangle turning
+// through the direction x, which swaps the sides of every node of the
+// edge's wall, wherever it is. The others are collisions or take the whole
+// tree too.
+template <class Poly>
+bool confined(const scene::Scene& s, const Certificate<Poly>& c) {
+  switch (c.key.type) {
+    case Certificate_type::VV:
+    case Certificate_type::IV:
+    case Certificate_type::II: return true;
+    case Certificate_type::VE: {
+      const SV& v = c.key.vertex;
+      const SP* e = std::get_if<SP>(&c.key.against);
+      if (v.kind != SV::Kind::endpoint || !e || e->kind != SP::Kind::E) return false;
+      return std::ranges::none_of(s.edge_triangles[e->id], [&](std::size_t t) {
+        return std::ranges::find(s.triangles[t], v.ids[0]) != s.triangles[t].end();
+      });
+    }
+    default: return false;
+  }
 }
 
 // Whether a is n or one of n's ancestors.
@@ -118,10 +135,11 @@ bool ancestor_or_self(const tree::Tree_links& links, int a, int n) {
 }
 
 // The piece of `site` inside the cell of `scope`, cut down the scope's
-// proper ancestors (`path`, root first): an empty piece when the site cuts
-// one of them or misses the cell, and no answer when it meets the cell of
-// an ancestor of lower priority, where the tree in force would have it cut
-// already (a sign above the scope changed).
+// proper ancestors (`path`, root first): empty when the site misses the
+// cell, and no answer when it meets the cell of an ancestor of lower or
+// equal priority (its own node), where the tree in force would have it cut
+// already: a sign above the scope changed. (A site the batch names cuts no
+// node above the scope, by the scope's choice.)
 template <class K>
 std::optional<tree::Piece> piece_in_cell(const tree::Kvd_tree& t, const tree::Fragment_splitter<K>& split, const SP& site,
                                          const std::vector<int>& path, int scope) {
@@ -130,8 +148,7 @@ std::optional<tree::Piece> piece_in_cell(const tree::Kvd_tree& t, const tree::Fr
   tree::Piece piece = tree::site_fragment(s, site);
   for (std::size_t i = 0; i < path.size(); ++i) {
     const tree::Node& b = t.nodes[static_cast<std::size_t>(path[i])];
-    if (b.cut == site) return tree::Piece{};
-    if (tree::cut_priority(s, b.cut) > priority) return std::nullopt;
+    if (tree::cut_priority(s, b.cut) >= priority) return std::nullopt;
     const int child = i + 1 < path.size() ? path[i + 1] : scope;
     auto [neg, pos] = split.split(*piece, b.cut, site);
     piece = b.right == child ? std::move(pos) : std::move(neg);
@@ -174,10 +191,11 @@ std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failin
 template <class Poly>
 int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
                  const std::vector<const Certificate<Poly>*>& failing) {
-  // Each certificate's highest node: its own, or an ancestor cut by a site it names.
+  // Each certificate's highest node: its own, or an ancestor cut by a site
+  // it names (named, not only moved: a VV vertex's crossed P-cut is above).
   std::vector<int> tops;
   for (const Certificate<Poly>* c : failing) {
-    if (!confined(c->key.type)) return -1;
+    if (!confined(s, *c)) return -1;
     const Sites named = sites_of(s, *c, Reach::named);
     int top = c->node;
     for (int n = c->node; n >= 0; n = links.parent(n))
@@ -187,7 +205,7 @@ int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tre
   if (tops.empty()) return -1;
   int scope = tops.front();
   for (int n : tops)
-    while (!ancestor_or_self(links, scope, n)) scope = links.parent(scope);
+    while (scope >= 0 && !ancestor_or_self(links, scope, n)) scope = links.parent(scope);
   return scope;
 }
 
@@ -206,7 +224,11 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
     std::ranges::reverse(path);
     for (const SP& site : moving) {
       const auto piece = piece_in_cell(t, split, site, path, scope);
-      if (!piece) {
+      // With the signs above unchanged, a site meets the scope's cell just
+      // when the tree in force holds a piece of it there.
+      const bool was_in =
+          std::ranges::any_of(links.holding(site), [&](int n) { return ancestor_or_self(links, scope, n); });
+      if (!piece || piece->has_value() != was_in) {
         scope = -1;
         pieces.clear();
         break;
@@ -267,7 +289,7 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   const std::vector<int> touched = editor.touched_nodes();
   changed.insert(changed.end(), touched.begin(), touched.end());
   const std::size_t differ = journal ? nodes_changed(t, *journal, changed) : 0;
-  return {moving.size(), touched.size(), differ, std::move(changed), scope, asked && scope < 0};
+  return {moving.size(), touched.size(), differ, std::move(changed), asked && scope < 0};
 }
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \

@@ -2,21 +2,25 @@
 // obtained from the tree in force by the operations of thesis 7.2 alone.
 //
 // A failing certificate names features (its vertex, its plane's feature,
-// the edges of an intersection point); the sites holding them are the
-// moving sites. V-update (VV, VE and the vertex certificates) moves the
-// sites of a vertex: its P-cut and the E- and T-cuts of its edges and
-// triangles. E-update (IV, II, ET) moves the sites of an edge: its E-cut and
-// the T-cuts of its triangles. A batch moves the union of its events' sites.
+// the edges of an intersection point); the sites holding them, less two,
+// are the moving sites. V-update (VV, VE and the vertex certificates) moves
+// the sites of a vertex: its P-cut and the E- and T-cuts of its edges and
+// triangles, but not the P-cut a VV vertex crosses (thesis Fig. 7.8).
+// E-update (IV, II, ET) moves the sites of the edge whose intersection
+// point moved: its E-cut and the T-cuts of its triangles, not those of the
+// edge whose E-plane it lies on. A batch moves the union of its events'
+// sites.
 //
-// The update drags every node of a moving site out of the tree, lowest
-// priority first, so each drag merges subtrees that hold no moving site
-// (the thesis's MERGE effects), then inserts the moving sites again from
-// the root in priority order, out of order where they meet lower-priority
-// nodes (the thesis's SPLIT effects: the pieces land wherever the sites now
-// are). The part of the tree that holds no moving site is the tree of the
-// other sites, which no failing sign involves, so it is unchanged by the
-// batch; the insertions then give the tree just after it, whatever order the
-// batch's events would be taken in (proofs/local_update.md).
+// The update drags the nodes of the moving sites, lowest priority first, so
+// each drag merges subtrees that hold no moving site (the thesis's MERGE
+// effects), then inserts the moving sites again in priority order, out of
+// order where they meet lower-priority nodes (the thesis's SPLIT effects:
+// the pieces land wherever the sites now are). The part of the tree that
+// holds no moving site is the tree of the other sites, which no failing sign
+// involves, so it is unchanged by the batch; the insertions then give the
+// tree just after it, whatever order the batch's events would be taken in
+// (proofs/local_update.md, sections 3 and 4). Where the batch's failing
+// signs all lie in one subtree, the update is confined to it (section 5).
 #pragma once
 
 #include <cstddef>
@@ -52,18 +56,18 @@ struct Update_cost {
   // journal only.
   std::size_t nodes_changed = 0;
   // Those nodes, with the parents given a new child in place of a dragged
-  // node: what the structure hash and the links must see again
-  // (Subtree_hashes::update, Tree_links::update).
+  // node or of the confined subtree's old root: what the structure hash and
+  // the links must see again (Subtree_hashes::update, Tree_links::update).
   std::vector<int> changed;
-  int scope = -1;        // the node whose subtree the update re-cut, -1 the whole tree
   bool widened = false;  // a scope was asked for and the whole tree taken
 };
 
 // The subtree a batch is confined to (proofs/local_update.md, section 5):
 // the lowest node whose subtree holds, for every failing certificate, the
 // node holding it and every ancestor of that node cut by a site the
-// certificate moves. -1 (the whole tree) when a failure is not a VV, IV or
-// II one, or for no failure.
+// certificate names (moved or not). -1 (the whole tree) when a failure is
+// not a VV, IV or II one, or a VE one of a vertex off the edge's triangles,
+// or for no failure.
 template <class Poly>
 int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
                  const std::vector<const Certificate<Poly>*>& failing);
@@ -74,12 +78,13 @@ int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tre
 //
 // With `scope` a node, only the nodes of moving sites in its subtree are
 // dragged, and each moving site is inserted again with its piece inside the
-// scope's cell, at the scope's place (`--update local`). A site that cuts a
-// node above the scope is left alone; a site found meeting the cell of a
-// lower-priority node above the scope means that the batch changed a sign
-// above it, and the update takes the whole tree (Update_cost::widened). With
-// `scope` -1 every node of a moving site is dragged and every site inserted
-// from the root (`--update reinsert`).
+// scope's cell, at the scope's place (`--update local`). When a sign above
+// the scope shows as changed (a moving site meeting the cell of an ancestor
+// of lower or equal priority, or meeting the scope's cell now but holding no
+// node in it before, or the reverse), the update takes the whole tree
+// instead (Update_cost::widened). With `scope` -1 every node of a moving
+// site is dragged and every site inserted from the root (`--update
+// reinsert`).
 template <class K>
 Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
                          const std::set<symbolic::Symbolic_plane>& moving, int scope = -1,
