@@ -214,9 +214,10 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
                          const std::set<SP>& moving, int scope, tree::Tree_journal* journal) {
   const scene::Scene& s = split.classifier().motion().scene();
   const bool asked = scope >= 0;
-  // Each moving site's piece inside the scope's cell, before any edit: the
-  // ancestors' cuts are not edited, and a site meeting the cell of a
-  // lower-priority ancestor widens the scope to the whole tree.
+  // Each moving site's piece inside the scope's cell, before any edit (the
+  // ancestors' cuts are not edited); a sign above the scope found changed
+  // widens the scope to the whole tree, where the pieces are the sites'
+  // whole fragments.
   std::vector<std::pair<SP, tree::Fragment>> pieces;
   if (asked) {
     std::vector<int> path;  // the scope's proper ancestors, root first
@@ -236,6 +237,8 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
       if (*piece) pieces.emplace_back(site, std::move(**piece));
     }
   }
+  if (scope < 0)
+    for (const SP& site : moving) pieces.emplace_back(site, tree::site_fragment(s, site));
   // The nodes of moving sites in the scope, with where each hangs.
   struct Held {
     std::size_t priority;
@@ -273,19 +276,14 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   };
   tree::Tree_editor<K> editor(t, split, journal);
   for (const Held& h : held) hang(h.parent, h.right, editor.drag(h.node));
-  if (scope >= 0) {
-    const auto hung = [&] {
-      if (above < 0) return t.root;
-      const tree::Node& p = t.nodes[static_cast<std::size_t>(above)];
-      return on_right ? p.right : p.left;
-    };
-    std::ranges::sort(pieces, {}, [&](const auto& p) { return tree::cut_priority(s, p.first); });
-    for (auto& [site, piece] : pieces) hang(above, on_right, editor.insert(hung(), site, std::move(piece)));
-  } else {
-    std::vector<SP> order(moving.begin(), moving.end());
-    tree::sort_by_priority(s, order);
-    for (const SP& site : order) t.root = editor.insert(t.root, site, tree::site_fragment(s, site));
-  }
+  // Highest priority first, at the scope's place (the root for the whole tree).
+  const auto hung = [&] {
+    if (above < 0) return t.root;
+    const tree::Node& p = t.nodes[static_cast<std::size_t>(above)];
+    return on_right ? p.right : p.left;
+  };
+  std::ranges::sort(pieces, {}, [&](const auto& p) { return tree::cut_priority(s, p.first); });
+  for (auto& [site, piece] : pieces) hang(above, on_right, editor.insert(hung(), site, std::move(piece)));
   const std::vector<int> touched = editor.touched_nodes();
   changed.insert(changed.end(), touched.begin(), touched.end());
   const std::size_t differ = journal ? nodes_changed(t, *journal, changed) : 0;
