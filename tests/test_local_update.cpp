@@ -59,18 +59,18 @@ Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at,
   const predicates::Classifier<Exact_kernel> c(k, s);
   Figure f{tree::build(c, Exact_time(from)), {}};
   const auto in_force = kinetic::reduced_certificates(c, f.before, Exact_time(from));
+  f.after = f.before;
+  const tree::Tree_links links(f.after);
   std::set<SP> moving;
   std::vector<const kinetic::Certificate<Exact_kernel::Poly>*> failing;
   for (const auto& cert : in_force)
     for (const auto& q : cert.polys)
       if (auto r = k.next_root(q, Exact_time(from)); r && k.compare(*r, Exact_time(at)) == 0) {
-        moving.merge(kinetic::moving_sites(s, cert));
+        moving.merge(kinetic::moving_sites(s, links, f.after, cert));
         failing.push_back(&cert);
         break;
       }
   REQUIRE(!moving.empty());
-  f.after = f.before;
-  const tree::Tree_links links(f.after);
   f.scope = scope ? *links.holding(*scope).begin() : kinetic::update_scope(s, links, f.after, failing);
   tree::Tree_journal journal(f.after);
   const auto cost =

@@ -181,11 +181,27 @@ Sites sites_of(const scene::Scene& s, const Certificate<Poly>& c, Reach reach) {
   return out;
 }
 
+// Whether a node of one of `sites` is a proper ancestor of n.
+bool below_any(const tree::Kvd_tree& t, const tree::Tree_links& links, int n, const Sites& sites) {
+  for (int a = links.parent(n); a >= 0; a = links.parent(a))
+    if (sites.contains(t.nodes[static_cast<std::size_t>(a)].cut)) return true;
+  return false;
+}
+
 }  // namespace
 
 template <class Poly>
-std::set<SP> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing) {
-  return sites_of(s, failing, Reach::moved);
+std::set<SP> moving_sites(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
+                          const Certificate<Poly>& failing) {
+  if (failing.key.type != Certificate_type::IV) return sites_of(s, failing, Reach::moved);
+  // An IV failure's P-plane moves only when its node hangs below a node of
+  // the edge's sites: there it classifies corners those sites' planes make,
+  // which reach the P-plane with the point (proofs/local_update.md, section 4).
+  Sites out;
+  for (const SV& v : failing.vertices) sites_of(s, v, Reach::moved, out);
+  for (const SP& p : failing.planes)
+    if (std::ranges::any_of(links.holding(p), [&](int n) { return below_any(t, links, n, out); })) sites_of(s, p, out);
+  return out;
 }
 
 template <class Poly>
@@ -291,7 +307,8 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
 }
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \
-  template std::set<SP> moving_sites<K::Poly>(const scene::Scene&, const Certificate<K::Poly>&);            \
+  template std::set<SP> moving_sites<K::Poly>(const scene::Scene&, const tree::Tree_links&,                  \
+                                              const tree::Kvd_tree&, const Certificate<K::Poly>&);        \
   template int update_scope<K::Poly>(const scene::Scene&, const tree::Tree_links&, const tree::Kvd_tree&,    \
                                      const std::vector<const Certificate<K::Poly>*>&);                     \
   template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Tree_links&,                          \

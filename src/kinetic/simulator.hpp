@@ -250,7 +250,7 @@ private:
     std::set<symbolic::Symbolic_plane> moving;
     std::vector<const Certificate<typename K::Poly>*> failing;
     for (std::size_t id : queue_->first()) {
-      moving.merge(moving_sites(scene_, in_force_[id]));
+      moving.merge(moving_sites(scene_, links_, current_, in_force_[id]));
       failing.push_back(&in_force_[id]);
     }
     const int scope = o_.update == Update::local ? update_scope(scene_, links_, current_, failing) : -1;

@@ -42,9 +42,12 @@ namespace kvd::kinetic {
 // edge never moves without its triangles.
 std::set<symbolic::Symbolic_plane> sites_with(const scene::Scene& s, const symbolic::Symbolic_plane& site);
 
-// The sites that a failing certificate's features move.
+// The sites that a failing certificate's features move, in the tree in
+// force `t` with its links (an IV failure moves its P-plane only where its
+// node hangs below a node of the moving edge's sites).
 template <class Poly>
-std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const Certificate<Poly>& failing);
+std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const tree::Tree_links& links,
+                                                const tree::Kvd_tree& t, const Certificate<Poly>& failing);
 
 struct Update_cost {
   std::size_t sites = 0;          // moving sites
