@@ -34,6 +34,11 @@ std::vector<SV> intersection_walls(const tree::Node& n) {
   return out;
 }
 
+bool names_walls(const tree::Node& n) {
+  if (std::holds_alternative<SV>(n.fragment)) return true;
+  return !intersection_walls(n).empty();
+}
+
 template <class K>
 class Reduced_maker<K>::Impl {
   using P = typename K::Poly;

@@ -75,7 +75,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     int node;
     Key key;
     std::vector<int> ancestors;
-    int children_path;
+    int path, children_path;
   };
   std::vector<Pending> pending;
   struct Visit {
@@ -91,17 +91,26 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     const auto slot = static_cast<std::size_t>(v.node);
     const tree::Node& n = t.nodes[slot];
     Record& r = records_[slot];
-    if (!whole && !marked[slot] && r.used && r.key.path == v.path) continue;
+    if (!whole && !marked[slot] && r.used && r.path == v.path) continue;
     ancestors.resize(v.depth);
-    int children;
-    if (!remake_ && r.used && r.key.path == v.path && r.key.cut == n.cut &&
-        (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(slot)) {
-      children = r.children_path;
-    } else {
+    const auto children_of = [&] {
       const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersection_walls(n)}, next_path_);
       next_path_ += fresh;
-      children = known->second;
-      pending.push_back({v.node, Key{v.path, n.cut, tree::canonical(n.fragment)}, ancestors, children});
+      return known->second;
+    };
+    const int key_path = names_walls(n) ? v.path : unwalled;
+    int children;
+    if (!remake_ && r.used && r.key.path == key_path && r.key.cut == n.cut &&
+        (r.fragment == n.fragment || r.key.fragment == tree::canonical(n.fragment)) && !holds_failed(slot)) {
+      // Kept; under other ancestors (an unwalled node) it gives its children another path.
+      if (r.path != v.path) {
+        r.path = v.path;
+        r.children_path = children_of();
+      }
+      children = r.children_path;
+    } else {
+      children = children_of();
+      pending.push_back({v.node, Key{key_path, n.cut, tree::canonical(n.fragment)}, ancestors, v.path, children});
       drop(slot);
     }
     ancestors.push_back(v.node);
@@ -152,6 +161,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     Record& r = records_[slot];
     r.used = true;
     r.fragment = n.fragment;
+    r.path = pending[p].path;
     r.children_path = pending[p].children_path;
     r.certificates = std::move(certs[p]);
     for (auto& cert : r.certificates) {

@@ -2,8 +2,9 @@
 // nodes whose certificates can have changed make them again (thesis 6.5).
 //
 // What a node's certificates are made from is its key: its cut and
-// fragment, the cuts of its ancestors and the intersection endpoints of its
-// E-node ancestors' fragments (the P-walls those stand for), and the motions
+// fragment, and, when they name walls of its ancestors (names_walls), the
+// cuts of its ancestors and the intersection endpoints of its E-node
+// ancestors' fragments (the P-walls those stand for); and the motions
 // (a motion change starts afresh with clear()). A node whose key was in the
 // tree before the batch, and which holds no certificate that failed in the
 // batch, keeps the certificates it had. The others make theirs at the new
@@ -35,6 +36,12 @@ namespace kvd::kinetic {
 // P-walls (intersection cuts) it offers its subtree besides its cut. None
 // for other nodes.
 std::vector<symbolic::Symbolic_vertex> intersection_walls(const tree::Node& n);
+
+// Whether a node's reduced certificates name walls of its ancestors: a
+// point node's (thesis 6.4.1) and an edge fragment's with an intersection
+// endpoint (6.4.2). A triangle node's (6.4.4) and the other edge nodes'
+// (6.4.3, ET) are made from its cut and fragment alone.
+bool names_walls(const tree::Node& n);
 
 // The reduced certificates one node makes at `now`, its ancestors being
 // `path` (root first); each named once, by key.
@@ -93,7 +100,9 @@ private:
   // intersection endpoints of an E-cut's fragment.
   using Path = std::tuple<int, symbolic::Symbolic_plane, std::vector<symbolic::Symbolic_vertex>>;
   struct Key {
-    int path;  // the ancestors, as an id of paths_ (-1 at the root)
+    // The ancestors, as an id of paths_ (-1 at the root), or `unwalled` for
+    // a node whose certificates name no wall of an ancestor.
+    int path;
     symbolic::Symbolic_plane cut;
     tree::Fragment fragment;
     auto operator<=>(const Key&) const = default;
@@ -101,10 +110,12 @@ private:
   // What a node slot of the tree held at the last update. A node whose slot
   // holds its key is matched in place (the local update keeps the slots of
   // the nodes it does not touch); others are looked up by key (`where_`).
+  static constexpr int unwalled = -2;
   struct Record {
     bool used = false;
     Key key;
     tree::Fragment fragment;  // as the tree held it: equal means equal keys
+    int path = -1;            // the path id of its ancestors
     int children_path = -1;   // the path id the node gives its children
     std::vector<Certificate<Poly>> certificates;
   };
