@@ -258,6 +258,7 @@ private:
     auto updated = builder_.update(current_, links_, at, moving, scope);
     if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
+      batch.scope = cost->widened ? Update_scope::widened : scope >= 0 ? Update_scope::subtree : Update_scope::whole;
       batch.nodes_touched = cost->nodes_touched;
       batch.nodes_changed = cost->nodes_changed;
       return {std::move(current_), {}, std::move(cost->changed)};

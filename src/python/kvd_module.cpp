@@ -187,6 +187,9 @@ private:
     d["failing"] = failing;
     d["changed"] = b.changed;
     d["structure_hash"] = b.structure;
+    d["scope"] = b.scope == kvd::kinetic::Update_scope::none
+                     ? py::object(py::none())
+                     : py::object(py::str(kvd::kinetic::update_scope_names[static_cast<std::size_t>(b.scope)]));
     d["nodes_touched"] = b.nodes_touched;
     d["nodes_changed"] = b.nodes_changed;
     d["certificates_recomputed"] = b.certificates_recomputed;

@@ -69,12 +69,14 @@ const char* const simulate_help =
     "  --list            one line per batch\n"
     "  --json   {\"kernel\": K, \"certificate_set\": S, \"queue\": Q, \"batch_list\": [{\"time\": EXACT,\n"
     "           \"approx\": DECIMAL, \"failing\": N, \"certificates\": N, \"changed\": BOOL,\n"
-    "           \"nodes_touched\": N, \"nodes_changed\": N, \"nodes_recomputed\": N,\n"
+    "           \"scope\": \"subtree\"|\"whole\"|\"widened\"|null, \"nodes_touched\": N,\n"
+    "           \"nodes_changed\": N, \"nodes_recomputed\": N,\n"
     "           \"certificates_recomputed\": N}, ...],\n"
     "           \"motion_changes\": [{\"time\": EXACT, \"approx\",\n"
     "           \"collision\": EXACT, \"collision_approx\", \"objects\": [ID, ...], \"motions\": [...],\n"
     "           \"batches_before\": N, \"tree_changed\": BOOL, \"contact\": TEXT}, ...], \"update\": U,\n"
-    "           \"nodes_touched\": {\"median\", \"changed_median\", \"below_10_share\"} (null with\n"
+    "           \"nodes_touched\": {\"median\", \"changed_median\", \"below_10_share\",\n"
+    "           \"scopes\": {\"subtree\", \"whole\", \"widened\"}} (null with\n"
     "           rebuild; changed: nodes whose cut or fragment the update changed),\n"
     "           \"certificates_recomputed\": {\"median\", \"nodes_median\", \"total\"},\n"
     "           \"events\": N, \"batches\": N, \"simultaneous_batches\": N, \"collisions\": N,\n"
@@ -220,6 +222,9 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
                          {"failing", e.failures()},
                          {"certificates", e.certificates},
                          {"changed", e.changed},
+                         {"scope", e.scope == kinetic::Update_scope::none
+                                       ? Json(nullptr)
+                                       : Json(kinetic::update_scope_names[static_cast<std::size_t>(e.scope)])},
                          {"nodes_touched", e.nodes_touched},
                          {"nodes_changed", e.nodes_changed},
                          {"nodes_recomputed", e.nodes_recomputed},
@@ -229,7 +234,10 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
     const Json touched_json = local
                                   ? Json{{"median", decimal(fixed(touched.median, 1))},
                                          {"changed_median", decimal(fixed(touched.changed_median, 1))},
-                                         {"below_10_share", decimal(fixed(touched.below_10_share, 3))}}
+                                         {"below_10_share", decimal(fixed(touched.below_10_share, 3))},
+                                         {"scopes", {{"subtree", touched.scopes[1]},
+                                                     {"whole", touched.scopes[2]},
+                                                     {"widened", touched.scopes[3]}}}}
                                   : Json(nullptr);
     const Json j = {
         {"kernel", kernel_label(k)},
@@ -304,7 +312,10 @@ int report(const K& k, const scene::Scene& s, const kinetic::Options& o, const s
               << fixed(u.stddev, 3) << ", median " << fixed(u.median, 3) << " (tree " << fixed(u.tree_median, 3) << ")\n"
               << (local
                       ? "nodes touched: median " + fixed(touched.median, 1) + " per batch, " +
-                            fixed(100 * touched.below_10_share, 1) + "% of batches below 10\n"
+                            fixed(100 * touched.below_10_share, 1) + "% of batches below 10\n" +
+                            "scopes:        " + std::to_string(touched.scopes[1]) + " batches in a subtree, " +
+                            std::to_string(touched.scopes[2]) + " over the whole tree, " +
+                            std::to_string(touched.scopes[3]) + " widened\n"
                       : std::string())
               << "recomputed:    median " << fixed(recomputed.median, 1) << " certificates per batch "
               << "at " << fixed(recomputed.nodes_median, 1) << " nodes, " << recomputed.total << " in all\n"

@@ -4,6 +4,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -69,17 +70,21 @@ struct Touched {
   double median = 0;
   double changed_median = 0;
   double below_10_share = 0;  // of batches touching fewer than 10 nodes
+  std::array<std::size_t, 4> scopes{};  // local updates by kinetic::Update_scope
 };
 template <class Time>
 Touched nodes_touched(const kinetic::Simulation<Time>& sim) {
   std::vector<double> n, changed;
+  std::array<std::size_t, 4> scopes{};
   for (const auto& b : sim.batches) {
+    ++scopes[static_cast<std::size_t>(b.scope)];
     if (b.moving_sites == 0) continue;  // not a local update: a rebuild, or a floating-point repair's
     n.push_back(static_cast<double>(b.nodes_touched));
     changed.push_back(static_cast<double>(b.nodes_changed));
   }
   const auto below = std::count_if(n.begin(), n.end(), [](double x) { return x < 10; });
-  return {median(n), median(changed), n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size())};
+  return {median(n), median(changed), n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size()),
+          scopes};
 }
 
 // Certificates made again after each batch (detail/kinetic/reduced_upkeep.hpp).

@@ -88,6 +88,8 @@ def test_stepping_gives_the_batches_of_kvd_simulate(name, tmp_path):
         if "batch" in e:
             traced.setdefault(e["batch"], (e["time"], []))[1].append((e["certificate"], e["nodes"]))
     assert [(b["time"], b["failing"]) for b in batches] == [traced[i] for i in range(len(traced))]
+    assert [(b["scope"], b["nodes_touched"]) for b in batches] == [
+        (t["scope"], t["nodes_touched"]) for t in summary["batch_list"]]
     assert k.summary["structure_hash"] == summary["structure_hash"]
     assert k.summary["valid"] and k.summary["stopped"] == summary["stopped"]
     assert k.events == batches

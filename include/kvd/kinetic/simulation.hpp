@@ -43,6 +43,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -58,6 +59,14 @@ namespace kvd::kinetic {
 // A failing certificate, by its identity.
 using Failure = Certificate_key;
 
+// Where a local update worked: in one subtree (proofs/local_update.md,
+// section 5), over the whole tree (a batch not confined, or --update
+// reinsert), or over the whole tree after a subtree was asked for and its
+// checks found a sign above it changed (widened). None: no local update (a
+// rebuild, or a floating-point repair's build).
+enum class Update_scope : std::uint8_t { none, subtree, whole, widened };
+inline constexpr const char* update_scope_names[] = {"none", "subtree", "whole", "widened"};
+
 template <class Time>
 struct Batch {
   Time time;
@@ -66,6 +75,7 @@ struct Batch {
   bool changed = false;          // whether the tree just after differs from the tree before
   std::string structure;         // the structure hash of the tree just after
   std::size_t moving_sites = 0;   // --update local: the sites the batch moved
+  Update_scope scope = Update_scope::none;
   std::size_t nodes_touched = 0;  // --update local: the nodes the update touched
   std::size_t nodes_changed = 0;  // --update local: of those, the nodes whose cut or fragment changed
   std::size_t nodes_recomputed = 0;         // nodes that made their certificates again (all, with the full set)
