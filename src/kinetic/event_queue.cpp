@@ -3,6 +3,7 @@
 #include <boost/heap/pairing_heap.hpp>
 
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/tree/slot_marks.hpp"
 #include "kvd/kernel/kernel.hpp"
 
 namespace kvd::kinetic {
@@ -79,14 +80,12 @@ public:
     if (t.root >= 0) slot(t.root).parent = -1;
     // A dirty node's ancestors are dirty again (mark() relies on it); each
     // path is walked up to a node already walked.
-    std::vector<char> walked(slots_.size());
     for (int n : relinked) {
       if (!slot(n).dirty) continue;
-      for (int i = slot(n).parent; i >= 0 && !walked[static_cast<std::size_t>(i)]; i = slot(i).parent) {
-        walked[static_cast<std::size_t>(i)] = 1;
+      for (int i = slot(n).parent; i >= 0 && walked_.set(static_cast<std::size_t>(i)); i = slot(i).parent)
         slot(i).dirty = true;
-      }
     }
+    walked_.clear();
   }
 
   void set(std::size_t id, int node, std::optional<Time> time) override {
@@ -139,6 +138,7 @@ private:
   const K* k_;
   std::vector<Slot> slots_;
   std::vector<int> where_;  // the node holding each certificate, -1 if none
+  tree::Slot_marks walked_;  // reshape's, cleared after each
   int root_ = -1;
 };
 

@@ -28,38 +28,32 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
                                                               const std::vector<int>* edited,
                                                               const typename K::Time& now,
                                                               const std::set<Certificate_key>& failed, Work& work) {
+  // Room to grow: moving every record each time the tree outgrows the
+  // capacity would cost the tree's size per batch.
+  if (records_.capacity() < t.nodes.size()) records_.reserve(t.nodes.size() + t.nodes.size() / 2);
   records_.resize(std::max(records_.size(), t.nodes.size()));
   const bool whole = !edited || remake_;
   // The slots whose record holds a failed certificate, from the holders of
   // the failed keys (records are read below only as they were on entry).
-  std::vector<char> failed_slot(records_.size());
-  std::vector<int> failed_slots;
   for (const Certificate_key& key : failed)
     if (const auto it = holders_.find(key); it != holders_.end())
-      for (int slot : it->second) {
-        char& seen = failed_slot[static_cast<std::size_t>(slot)];
-        if (!seen) failed_slots.push_back(slot);
-        seen = 1;
-      }
-  const auto holds_failed = [&](std::size_t slot) { return failed_slot[slot] != 0; };
+      for (int slot : it->second) failed_.set(static_cast<std::size_t>(slot));
+  const auto holds_failed = [&](std::size_t slot) { return failed_[slot]; };
   // What the walk must look at: the nodes the edit changed, those holding a
   // failed certificate, and their ancestors. An unmarked node below the
   // same ancestors as before roots a subtree the batch left alone, every
   // record of which is kept in place (its keys cannot have changed).
-  std::vector<char> marked(whole ? 0 : t.nodes.size());
   if (!whole) {
     for (int n : *edited)
-      if (links.live(n)) links.mark_path(n, marked);
-    for (int slot : failed_slots)
-      if (links.live(slot)) links.mark_path(slot, marked);
+      if (links.live(n)) links.mark_path(n, marked_);
+    for (std::size_t slot : failed_.marked())
+      if (links.live(static_cast<int>(slot))) links.mark_path(static_cast<int>(slot), marked_);
   }
   // The slots whose records are not kept in place: released ones, and
   // pending nodes (below); listed when they held a record.
-  std::vector<char> not_kept(records_.size());
   std::vector<int> not_kept_slots;
   const auto drop = [&](std::size_t slot) {
-    if (!not_kept[slot] && records_[slot].used) not_kept_slots.push_back(static_cast<int>(slot));
-    not_kept[slot] = 1;
+    if (not_kept_.set(slot) && records_[slot].used) not_kept_slots.push_back(static_cast<int>(slot));
   };
   if (whole) {
     for (std::size_t slot = 0; slot < records_.size(); ++slot)
@@ -91,7 +85,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     const auto slot = static_cast<std::size_t>(v.node);
     const tree::Node& n = t.nodes[slot];
     Record& r = records_[slot];
-    if (!whole && !marked[slot] && r.used && r.path == v.path) continue;
+    if (!whole && !marked_[slot] && r.used && r.path == v.path) continue;
     ancestors.resize(v.depth);
     const auto children_of = [&] {
       const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersection_walls(n)}, next_path_);
@@ -134,12 +128,10 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   Reduced_maker<K> maker(c, t, now);
   std::vector<std::vector<Certificate<Poly>>> certs(pending.size());
   std::vector<bool> made(pending.size());
-  std::vector<bool> given(records_.size());
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const auto old = where_.find(pending[p].key);
     const auto from = old == where_.end() ? records_.size() : static_cast<std::size_t>(old->second);
-    if (!remake_ && from < records_.size() && not_kept[from] && !given[from] && !holds_failed(from)) {
-      given[from] = true;
+    if (!remake_ && from < records_.size() && not_kept_[from] && !holds_failed(from) && given_.set(from)) {
       certs[p] = std::move(records_[from].certificates);
     } else {
       made[p] = true;
@@ -154,7 +146,6 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     if (const auto it = where_.find(r.key); it != where_.end() && it->second == slot) where_.erase(it);
     r = Record{};
   }
-  std::vector<bool> rewritten(records_.size()), fresh(records_.size());
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const auto slot = static_cast<std::size_t>(pending[p].node);
     const tree::Node& n = t.nodes[slot];
@@ -170,8 +161,8 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     }
     where_.try_emplace(pending[p].key, pending[p].node);  // a key met twice stays with its first node
     r.key = std::move(pending[p].key);
-    rewritten[slot] = true;
-    fresh[slot] = made[p];
+    rewritten_.set(slot);
+    if (made[p]) fresh_.set(slot);
   }
   records_.resize(t.nodes.size());
   remake_ = false;
@@ -186,10 +177,11 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     }
     const int holder = it->second.front();
     const auto slot = static_cast<std::size_t>(holder);
-    if (holder == old && !rewritten[slot]) continue;
+    if (holder == old && !rewritten_[slot]) continue;
     for (const auto& cert : records_[slot].certificates)
-      if (cert.key == key) out.changed.push_back({&cert, fresh[slot]});
+      if (cert.key == key) out.changed.push_back({&cert, fresh_[slot]});
   }
+  for (tree::Slot_marks* m : {&failed_, &marked_, &not_kept_, &given_, &rewritten_, &fresh_}) m->clear();
   return out;
 }
 

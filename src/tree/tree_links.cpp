@@ -59,8 +59,9 @@ const std::set<int>& Tree_links::holding(const Symbolic_plane& site) const {
   return it == sites_.end() ? none : it->second;
 }
 
-void Tree_links::mark_path(int n, std::vector<char>& marks) const {
-  for (int i = n; i >= 0 && !marks[at(i)]; i = parent_[at(i)]) marks[at(i)] = 1;
+void Tree_links::mark_path(int n, Slot_marks& marks) const {
+  for (int i = n; i >= 0 && marks.set(at(i)); i = parent_[at(i)]) {
+  }
 }
 
 void Tree_links::index(const Kvd_tree& t, int n) {

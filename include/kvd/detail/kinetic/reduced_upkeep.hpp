@@ -126,6 +126,10 @@ private:
   std::map<Path, int> paths_;  // every path met since the last clear()
   int next_path_ = 0;
   bool remake_ = false;
+  // One update's marks per slot: holding a failed certificate, on a path
+  // to be walked, record not kept in place, certificates given to another
+  // slot, record rewritten, certificates made; cleared before it returns.
+  tree::Slot_marks failed_, marked_, not_kept_, given_, rewritten_, fresh_;
 };
 
 }  // namespace kvd::kinetic

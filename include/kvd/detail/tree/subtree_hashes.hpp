@@ -26,11 +26,13 @@ public:
   const std::string& root() const;
 
 private:
-  // Hashes the nodes under `from` marked in `stale`, children first.
-  void rehash(const Kvd_tree& t, int from, const std::vector<char>& stale);
+  // Hashes the nodes under `from` for which stale(slot) holds, children first.
+  template <class Stale>
+  void rehash(const Kvd_tree& t, int from, const Stale& stale);
 
   std::vector<std::string> hash_;  // per node slot, of its subtree (lowercase hex)
   std::string root_;
+  Slot_marks stale_;  // update's, cleared after each
 };
 
 }  // namespace kvd::tree

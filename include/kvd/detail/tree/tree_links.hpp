@@ -8,6 +8,7 @@
 #include <set>
 #include <vector>
 
+#include "kvd/detail/tree/slot_marks.hpp"
 #include "kvd/tree/kvd_tree.hpp"
 
 namespace kvd::tree {
@@ -28,9 +29,8 @@ public:
   bool live(int n) const;
   // The nodes cut by `site`, increasing.
   const std::set<int>& holding(const Symbolic_plane& site) const;
-  // Sets marks[i] for n and its ancestors, up to the first already set;
-  // n must be live and marks sized to the tree.
-  void mark_path(int n, std::vector<char>& marks) const;
+  // Marks n and its ancestors, up to the first already marked; n must be live.
+  void mark_path(int n, Slot_marks& marks) const;
 
 private:
   void index(const Kvd_tree& t, int n);
