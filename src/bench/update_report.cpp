@@ -59,14 +59,15 @@ std::optional<double> growth_exponent(const std::vector<std::pair<double, double
 std::string csv(const std::vector<Size>& sizes) {
   std::string out =
       "triangles,configuration,batches,mean_ms,median_ms,max_ms,tree_median_ms,certificates_made_median,"
-      "nodes_recomputed_median,nodes_touched_median,nodes_changed_median,below_10_share,peak_rss_mib,structure_hash,"
+      "nodes_recomputed_median,nodes_touched_median,nodes_changed_median,nodes_changed_mean,nodes_changed_max,"
+      "below_10_share,peak_rss_mib,structure_hash,"
       "failure\n";
   for (const Size& s : sizes)
     for (const Run& r : s.runs) {
       if (!r.failure.empty()) {
         std::string quoted;
         for (char ch : r.failure) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        out += std::to_string(s.triangles) + ",\"" + r.configuration + "\",,,,,,,,,,,,,\"" + quoted + "\"\n";
+        out += std::to_string(s.triangles) + ",\"" + r.configuration + "\",,,,,,,,,,,,,,,\"" + quoted + "\"\n";
         continue;
       }
       const bool local = r.configuration != "rebuild" && !r.configuration.starts_with("rebuild,");
@@ -75,8 +76,9 @@ std::string csv(const std::vector<Size>& sizes) {
              "," + cli::fixed(r.costs.tree_median, 3) + "," + cli::fixed(r.recomputed.median, 1) + "," +
              cli::fixed(r.recomputed.nodes_median, 1) + "," +
              (local ? cli::fixed(r.touched.median, 1) + "," + cli::fixed(r.touched.changed_median, 1) + "," +
+                          cli::fixed(r.touched.changed_mean, 1) + "," + cli::fixed(r.touched.changed_max, 0) + "," +
                           cli::fixed(r.touched.below_10_share, 3)
-                    : std::string(",,")) +
+                    : std::string(",,,,")) +
              "," + cli::fixed(s.peak_rss_mib, 0) + "," + r.structure + ",\n";
     }
   return out;
@@ -95,8 +97,8 @@ std::string markdown(const Config& c, const std::vector<Size>& sizes, bool plott
       "runs (sizes run in increasing order).\n\n"
       "| triangles | batches | local: mean | median | max | reinsert: mean | median | double: mean | median | "
       "rebuild: mean | median | reinsert / local (mean) | rebuild / local (mean) | nodes touched (median), local | "
-      "reinsert | nodes changed (median) | peak RSS MiB | same tree |\n"
-      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+      "reinsert | nodes changed (median), local | mean | max | peak RSS MiB | same tree |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   const auto ratio = [](const Run* a, const Run* b) {
     return a && b && b->costs.average > 0 ? cli::fixed(a->costs.average / b->costs.average, 1) + "×" : std::string();
   };
@@ -111,7 +113,10 @@ std::string markdown(const Config& c, const std::vector<Size>& sizes, bool plott
            cell(dbl, median, 2) + " | " + cell(rebuild, mean, 2) + " | " + cell(rebuild, median, 2) + " | " +
            ratio(reinsert, local) + " | " + ratio(rebuild, local) + " | " + cell(local, touched, 1) + " | " +
            cell(reinsert, touched, 1) + " | " +
-           (local ? cli::fixed(local->touched.changed_median, 1) : std::string()) + " | " +
+           (local ? cli::fixed(local->touched.changed_median, 1) + " | " + cli::fixed(local->touched.changed_mean, 1) +
+                        " | " + cli::fixed(local->touched.changed_max, 0)
+                  : std::string(" | ")) +
+           " | " +
            cli::fixed(s.peak_rss_mib, 0) + " | " + (s.same_tree() ? "yes" : "**no**") + " |\n";
   }
   for (const Size& s : sizes)

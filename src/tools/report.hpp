@@ -69,6 +69,7 @@ Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
 struct Touched {
   double median = 0;
   double changed_median = 0;
+  double changed_mean = 0, changed_max = 0;
   double below_10_share = 0;  // of batches touching fewer than 10 nodes
   std::array<std::size_t, 4> scopes{};  // local updates by kinetic::Update_scope
 };
@@ -83,7 +84,13 @@ Touched nodes_touched(const kinetic::Simulation<Time>& sim) {
     changed.push_back(static_cast<double>(b.nodes_changed));
   }
   const auto below = std::count_if(n.begin(), n.end(), [](double x) { return x < 10; });
-  return {median(n), median(changed), n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size()),
+  double sum = 0, most = 0;
+  for (double x : changed) sum += x, most = std::max(most, x);
+  return {median(n),
+          median(changed),
+          changed.empty() ? 0 : sum / static_cast<double>(changed.size()),
+          most,
+          n.empty() ? 0 : static_cast<double>(below) / static_cast<double>(n.size()),
           scopes};
 }
 
