@@ -115,7 +115,7 @@ std::string markdown(const Config& c, const std::vector<Size>& sizes, bool plott
            cell(reinsert, touched, 1) + " | " +
            (local ? cli::fixed(local->touched.changed_median, 1) + " | " + cli::fixed(local->touched.changed_mean, 1) +
                         " | " + cli::fixed(local->touched.changed_max, 0)
-                  : std::string(" | ")) +
+                  : std::string(" |  | ")) +
            " | " +
            cli::fixed(s.peak_rss_mib, 0) + " | " + (s.same_tree() ? "yes" : "**no**") + " |\n";
   }

@@ -28,9 +28,8 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
                                                               const std::vector<int>* edited,
                                                               const typename K::Time& now,
                                                               const std::set<Certificate_key>& failed, Work& work) {
-  // Room to grow: moving every record each time the tree outgrows the
-  // capacity would cost the tree's size per batch.
-  if (records_.capacity() < t.nodes.size()) records_.reserve(t.nodes.size() + t.nodes.size() / 2);
+  // Marks left by an update that threw are not this update's.
+  for (tree::Slot_marks* m : {&failed_, &marked_, &not_kept_, &given_, &rewritten_, &fresh_}) m->clear();
   records_.resize(std::max(records_.size(), t.nodes.size()));
   const bool whole = !edited || remake_;
   // The slots whose record holds a failed certificate, from the holders of
@@ -181,7 +180,6 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     for (const auto& cert : records_[slot].certificates)
       if (cert.key == key) out.changed.push_back({&cert, fresh_[slot]});
   }
-  for (tree::Slot_marks* m : {&failed_, &marked_, &not_kept_, &given_, &rewritten_, &fresh_}) m->clear();
   return out;
 }
 

@@ -2,14 +2,15 @@
 // obtained from the tree in force by the operations of thesis 7.2 alone.
 //
 // A failing certificate names features (its vertex, its plane's feature,
-// the edges of an intersection point); the sites holding them, less two,
+// the edges of an intersection point); the sites holding them, less three,
 // are the moving sites. V-update (VV, VE and the vertex certificates) moves
 // the sites of a vertex: its P-cut and the E- and T-cuts of its edges and
 // triangles, but not the P-cut a VV vertex crosses (thesis Fig. 7.8).
 // E-update (IV, II, ET) moves the sites of the edge whose intersection
 // point moved: its E-cut and the T-cuts of its triangles, not those of the
-// edge whose E-plane it lies on. A batch moves the union of its events'
-// sites.
+// edge whose E-plane it lies on, and an IV's crossed P-cut only when its
+// node hangs below a node of those sites. A batch moves the union of its
+// events' sites.
 //
 // The update drags the nodes of the moving sites, lowest priority first, so
 // each drag merges subtrees that hold no moving site (the thesis's MERGE

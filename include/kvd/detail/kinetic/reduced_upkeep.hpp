@@ -27,6 +27,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "kvd/detail/tree/slot_marks.hpp"
 #include "kvd/detail/tree/tree_links.hpp"
 #include "kvd/kinetic/certificate.hpp"
 
@@ -128,7 +129,7 @@ private:
   bool remake_ = false;
   // One update's marks per slot: holding a failed certificate, on a path
   // to be walked, record not kept in place, certificates given to another
-  // slot, record rewritten, certificates made; cleared before it returns.
+  // slot, record rewritten, certificates made; cleared as the next starts.
   tree::Slot_marks failed_, marked_, not_kept_, given_, rewritten_, fresh_;
 };
 
