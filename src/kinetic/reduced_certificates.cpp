@@ -36,7 +36,8 @@ std::vector<SV> intersection_walls(const tree::Node& n) {
 
 bool names_walls(const tree::Node& n) {
   if (std::holds_alternative<SV>(n.fragment)) return true;
-  return !intersection_walls(n).empty();
+  const auto* e = std::get_if<tree::Edge_fragment>(&n.fragment);
+  return e && (e->a.kind == SV::Kind::intersection || e->b.kind == SV::Kind::intersection);
 }
 
 template <class K>
