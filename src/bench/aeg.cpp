@@ -131,21 +131,29 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   row.k = segments::count_crossings(s, s.start);
   using Kinetic = segments::Kinetic_segment_bsp<Exact_kernel>;
   const Exact_kernel k;
-  Kinetic local(k, s, false, segments::Segment_update::local), rebuild(k, s, false, segments::Segment_update::rebuild);
+  Kinetic local(k, s, false, segments::Segment_update::local), subtree(k, s, false, segments::Segment_update::subtree),
+      rebuild(k, s, false, segments::Segment_update::rebuild);
   const std::string label =
       "kvd bench aeg: " + row.family + ", n = " + std::to_string(n) + ", m = " + std::to_string(m);
   const auto progress = cli::progress_every_few_seconds(label);
-  std::vector<double> local_ms, rebuild_ms, nodes;
+  std::vector<double> local_ms, subtree_ms, rebuild_ms, nodes, subtree_nodes;
+  std::size_t frontier = 0, replays = 0;
   while (row.failures < events) {
     const bool more = local.next_event_time().has_value();
-    if (more != rebuild.next_event_time().has_value()) {
+    if (more != rebuild.next_event_time().has_value() || more != subtree.next_event_time().has_value()) {
       row.same = false;
       break;
     }
     if (!more) break;
     const Kinetic::Batch a = local.advance();
+    const Kinetic::Batch m = subtree.advance();
     const Kinetic::Batch b = rebuild.advance();
-    row.same = row.same && k.compare(a.time, b.time) == 0 && a.failing == b.failing;
+    row.same = row.same && k.compare(a.time, b.time) == 0 && a.failing == b.failing &&
+               k.compare(m.time, b.time) == 0 && m.failing == b.failing;
+    frontier += a.frontier_replays;
+    replays += a.frontier_replays + a.subtree_replays;
+    subtree_ms.push_back(1e3 * m.update_seconds);
+    subtree_nodes.push_back(static_cast<double>(m.nodes_rebuilt));
     ++row.batches;
     row.failures += a.failing.size();
     row.changed += a.changed;
@@ -155,17 +163,22 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
     nodes.push_back(static_cast<double>(a.nodes_rebuilt));
     progress(row.batches, row.failures);
   }
-  row.same = row.same && local.tree().text() == rebuild.tree().text();
+  row.same = row.same && local.tree().text() == rebuild.tree().text() && subtree.tree().text() == rebuild.tree().text();
   // A run that reached the span's end saw all of it (generated scenes have one).
   row.time = (local.next_event_time() ? k.to_double(local.now()) : s.end->get_d()) - s.start.get_d();
   row.local_mean_ms = mean(local_ms);
   row.local_max_ms = max(local_ms);
+  row.subtree_mean_ms = mean(subtree_ms);
+  row.subtree_max_ms = max(subtree_ms);
   row.rebuild_mean_ms = mean(rebuild_ms);
   row.rebuild_max_ms = max(rebuild_ms);
   row.nodes_rebuilt_median = cli::median(nodes);
+  row.subtree_nodes_median = cli::median(subtree_nodes);
+  row.frontier_share = replays ? static_cast<double>(frontier) / static_cast<double>(replays) : 0;
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
-            << cli::fixed(row.local_mean_ms, 2) << " ms, rebuild " << cli::fixed(row.rebuild_mean_ms, 2) << " ms"
-            << (row.same ? "" : "; the local update and the rebuild differ") << "\n";
+            << cli::fixed(row.local_mean_ms, 2) << " ms, subtree " << cli::fixed(row.subtree_mean_ms, 2)
+            << " ms, rebuild " << cli::fixed(row.rebuild_mean_ms, 2) << " ms"
+            << (row.same ? "" : "; the updates differ") << "\n";
   return row;
 }
 

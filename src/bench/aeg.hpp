@@ -33,9 +33,13 @@ struct Kinetic_row {
   std::size_t batches = 0, failures = 0, changed = 0;  // changed: batches that changed the tree
   std::array<std::size_t, 4> events{};  // failures by segments::Segment_event
   double time = 0;  // from the start to the last batch, or to the span's end when the run reached it
-  double local_mean_ms = 0, local_max_ms = 0, rebuild_mean_ms = 0, rebuild_max_ms = 0;
-  double nodes_rebuilt_median = 0;  // of the local update
-  bool same = true;  // both had the same batches (times, failing certificates) and end in the same tree
+  double local_mean_ms = 0, local_max_ms = 0, subtree_mean_ms = 0, subtree_max_ms = 0, rebuild_mean_ms = 0,
+         rebuild_max_ms = 0;
+  double nodes_rebuilt_median = 0, subtree_nodes_median = 0;  // of the local and the subtree update
+  // The failures' topmost nodes that the local update handled by the
+  // frontier replay, over all of them.
+  double frontier_share = 0;
+  bool same = true;  // all three had the same batches (times, failing certificates) and end in the same tree
   // Failures of `event` per unit of time, over m n (flips: over m); 0
   // without time or moving segments.
   double rate(std::size_t event) const;

@@ -59,7 +59,8 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
       "part,family,crossings,n,m,k,nodes,leaves,vertex_cuts,intersection_cuts,edge_cuts,height,size_over_bound,"
       "height_over_log2n,build_exact_ms,build_double_ms,build_ratio,batches,failures,changed_batches,vertex,edge,"
       "intersection,flip,time,vertex_per_mn,edge_per_mn,intersection_per_mn,flip_per_m,local_mean_ms,local_max_ms,"
-      "rebuild_mean_ms,rebuild_max_ms,rebuild_ratio,nodes_rebuilt_median,same\n";
+      "subtree_mean_ms,subtree_max_ms,rebuild_mean_ms,rebuild_max_ms,subtree_ratio,rebuild_ratio,nodes_rebuilt_median,"
+      "subtree_nodes_median,frontier_share,same\n";
   for (const Static_row& r : statics) {
     const segments::Bsp_counts& c = r.counts;
     out += "static,random," + r.crossings + "," + std::to_string(r.n) + ",0," + std::to_string(r.k) + "," +
@@ -67,7 +68,7 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            std::to_string(c.intersection_cuts) + "," + std::to_string(c.edge_cuts) + "," + std::to_string(c.height) +
            "," + significant(r.size_over_bound(), 6) + "," + significant(r.height_over_log(), 6) + "," +
            cli::fixed(r.build_exact_ms, 3) + "," + cli::fixed(r.build_double_ms, 3) + "," +
-           ratio(r.build_exact_ms, r.build_double_ms, 3) + ",,,,,,,,,,,,,,,,,,,\n";
+           ratio(r.build_exact_ms, r.build_double_ms, 3) + ",,,,,,,,,,,,,,,,,,,,,,,,\n";
   }
   for (const Kinetic_row& r : kinetics) {
     out += "kinetic," + r.family + ",linear," + std::to_string(r.n) + "," + std::to_string(r.m) + "," +
@@ -77,9 +78,11 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
     out += "," + significant(r.time, 6);
     for (std::size_t e = 0; e < r.events.size(); ++e) out += "," + significant(r.rate(e), 6);
     out += "," + cli::fixed(r.local_mean_ms, 3) + "," + cli::fixed(r.local_max_ms, 3) + "," +
+           cli::fixed(r.subtree_mean_ms, 3) + "," + cli::fixed(r.subtree_max_ms, 3) + "," +
            cli::fixed(r.rebuild_mean_ms, 3) + "," + cli::fixed(r.rebuild_max_ms, 3) + "," +
-           ratio(r.rebuild_mean_ms, r.local_mean_ms, 3) + "," + cli::fixed(r.nodes_rebuilt_median, 1) + "," +
-           (r.same ? "yes" : "no") + "\n";
+           ratio(r.subtree_mean_ms, r.local_mean_ms, 3) + "," + ratio(r.rebuild_mean_ms, r.local_mean_ms, 3) + "," +
+           cli::fixed(r.nodes_rebuilt_median, 1) + "," + cli::fixed(r.subtree_nodes_median, 1) + "," +
+           cli::fixed(r.frontier_share, 3) + "," + (r.same ? "yes" : "no") + "\n";
   }
   return out;
 }
@@ -113,8 +116,10 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
   out += "\n## Kinetic BSP against Lemmas 3.2-3.6\n\n"
          "`kvd generate segments-random --n N --moving M --seed 1` (short segments, linear motion) with m = n and "
          "n/2 moving, and `kvd generate segments-rotating --n N --seed 1` (every segment turning about its "
-         "midpoint, through vertical at most once). The exact kinetic BSP without validation, once with the local "
-         "update and once rebuilding the tree, batch by batch in turn: the random scenes up to the batch holding "
+         "midpoint, through vertical at most once). The exact kinetic BSP without validation, with the local "
+         "update (the frontier replay where it applies), the subtree update (the failures' topmost subtrees "
+         "replayed whole: the local update before the frontier replay) and rebuilding the tree, batch by batch in "
+         "turn: the random scenes up to the batch holding "
          "the " +
          std::to_string(c.events) +
          "th certificate failure, the rotating one over its whole span. *Failures*: the certificates that failed, "
@@ -123,13 +128,14 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
          "the events over a span by O(mn²) vertex, O(mnλ(n)) edge, O(mn) intersection and O(m) flip events: the "
          "rate columns are the failures of a kind per unit of time, over m·n (flips: over m), so the intersection "
          "and flip rates must stay bounded as n grows and the vertex and edge rates may grow at most about "
-         "linearly. *Update*: the tree and its certificates made just after a batch, ms per batch; rebuild / local "
-         "of the means; *nodes made again*: by the local update, median per batch. *Same*: both updates had the "
-         "same batches (times and failing certificates) and end in the same tree.\n\n"
+         "linearly. *Update*: the tree and its certificates made just after a batch, ms per batch; subtree / local "
+         "and rebuild / local of the means; *nodes made again*: median per batch, local / subtree; *frontier*: "
+         "the share of the failures' topmost nodes the local update handled by the frontier replay. *Same*: the "
+         "three updates had the same batches (times and failing certificates) and end in the same tree.\n\n"
          "| scene | n | m | k | batches (changed) | failures: vertex / edge / intersection / flip | time | vertex / mn "
-         "| edge / mn | intersection / mn | flip / m | local: mean | max | rebuild: mean | max | rebuild / local | "
-         "nodes made again (local) | same |\n"
-         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+         "| edge / mn | intersection / mn | flip / m | local: mean | max | subtree: mean | max | rebuild: mean | max "
+         "| subtree / local | rebuild / local | nodes made again | frontier | same |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const Kinetic_row& r : kinetics) {
     out += "| " + label(r) + " | " + std::to_string(r.n) + " | " + std::to_string(r.m) + " | " +
            std::to_string(r.k) + " | " + std::to_string(r.batches) + " (" + std::to_string(r.changed) + ") | ";
@@ -137,9 +143,11 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
     out += " | " + significant(r.time, 3);
     for (std::size_t e = 0; e < r.events.size(); ++e) out += " | " + significant(r.rate(e), 3);
     out += " | " + cli::fixed(r.local_mean_ms, 2) + " | " + cli::fixed(r.local_max_ms, 1) + " | " +
+           cli::fixed(r.subtree_mean_ms, 2) + " | " + cli::fixed(r.subtree_max_ms, 1) + " | " +
            cli::fixed(r.rebuild_mean_ms, 2) + " | " + cli::fixed(r.rebuild_max_ms, 1) + " | " +
-           ratio(r.rebuild_mean_ms, r.local_mean_ms, 2) + " | " + cli::fixed(r.nodes_rebuilt_median, 0) + " | " +
-           (r.same ? "yes" : "**no**") + " |\n";
+           ratio(r.subtree_mean_ms, r.local_mean_ms, 2) + " | " + ratio(r.rebuild_mean_ms, r.local_mean_ms, 2) +
+           " | " + cli::fixed(r.nodes_rebuilt_median, 0) + " / " + cli::fixed(r.subtree_nodes_median, 0) + " | " +
+           cli::fixed(r.frontier_share, 2) + " | " + (r.same ? "yes" : "**no**") + " |\n";
   }
   if (plotted)
     out += "\n## Plot\n\nThe two quotients of the static trees, and the mean update per batch of the random "
@@ -162,11 +170,13 @@ std::string static_plot_data(const std::vector<Static_row>& statics) {
 
 std::string kinetic_plot_data(const std::vector<Kinetic_row>& kinetics) {
   std::string out =
-      "# n, then the mean ms per batch of local and rebuild with m = n, then with m = n/2 (NaN: not run)\n";
+      "# n, then the mean ms per batch of local, subtree and rebuild with m = n, then of local and rebuild with "
+      "m = n/2 (NaN: not run)\n";
   for (const Kinetic_row& r : kinetics) {
     if (r.family != "random" || r.m != r.n) continue;
     const Kinetic_row* half = find(kinetics, r.n, r.n / 2);
-    out += std::to_string(r.n) + " " + cli::approx(r.local_mean_ms) + " " + cli::approx(r.rebuild_mean_ms) + " " +
+    out += std::to_string(r.n) + " " + cli::approx(r.local_mean_ms) + " " + cli::approx(r.subtree_mean_ms) + " " +
+           cli::approx(r.rebuild_mean_ms) + " " +
            value_or_nan(half, &Kinetic_row::local_mean_ms) + " " + value_or_nan(half, &Kinetic_row::rebuild_mean_ms) +
            "\n";
   }
@@ -191,7 +201,7 @@ std::string gnuplot_script(const Config& c) {
   size.key = height.key = "bottom right";  // the lines run high and flat
   update.title = "Kinetic BSP: mean update per batch, exact, first " + std::to_string(c.events) + " failures";
   update.ylabel = "ms per batch (log)";
-  update.series = {"local, m = n", "rebuild, m = n", "local, m = n/2", "rebuild, m = n/2"};
+  update.series = {"local, m = n", "subtree, m = n", "rebuild, m = n", "local, m = n/2", "rebuild, m = n/2"};
   return bench::gnuplot_script(c.out + "/aeg.svg", {size, height, update});
 }
 

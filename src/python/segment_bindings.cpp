@@ -4,6 +4,8 @@
 // segment scenes (tests/python/test_kvd.py).
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -132,6 +134,8 @@ private:
     d["changed"] = b.changed;
     d["certificates"] = b.certificates;
     d["nodes_rebuilt"] = b.nodes_rebuilt;
+    d["frontier_replays"] = b.frontier_replays;
+    d["subtree_replays"] = b.subtree_replays;
     d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(kin_.tree().text());
     return d;
@@ -146,9 +150,10 @@ private:
 
 std::unique_ptr<Any_segment_kinetic> make_kinetic(const Segment_scene& s, const std::string& kernel, std::size_t events,
                                                   bool validate, const std::string& update, const py::handle& until) {
-  if (update != "local" && update != "rebuild")
-    throw py::value_error("update is 'local' or 'rebuild', not '" + update + "'");
-  const auto u = update == "local" ? segments::Segment_update::local : segments::Segment_update::rebuild;
+  const auto& names = segments::segment_update_names;
+  const auto at = std::find(std::begin(names), std::end(names), update);
+  if (at == std::end(names)) throw py::value_error("update is 'local', 'subtree' or 'rebuild', not '" + update + "'");
+  const auto u = static_cast<segments::Segment_update>(at - std::begin(names));
   const std::optional<mpq_class> end = until.is_none() ? std::nullopt : std::optional(to_mpq(until));
   return with_kernel(kernel, [&](const auto& k) -> std::unique_ptr<Any_segment_kinetic> {
     using K = std::decay_t<decltype(k)>;

@@ -45,10 +45,26 @@ void Bsp_builder<K>::replay(std::size_t v, const std::vector<Arrival>& arrivals)
   node.kind = Cut_kind::leaf;
   node.child[0] = node.child[1] = -1;
   if (log_) log_->at[v].clear();
-  // A segment whose crossing walk reaches v finds again the crossings strictly
-  // inside v's part of it; a crossing at an end of that part was found above
-  // v, and its logged intersection cut is kept. Both go in the order of the
-  // whole construction: by the other segment's priority.
+  steps(v, arrivals);
+}
+
+template <class K>
+void Bsp_builder<K>::reroute(std::size_t u, const std::vector<Arrival>& arrivals, std::size_t rank,
+                             std::map<std::size_t, std::vector<Arrival>>& at) {
+  frontier_ = rank;
+  collect_ = &at;
+  origin_ = u;
+  steps(u, arrivals);
+  collect_ = nullptr;
+}
+
+// Each arrival continues from v as it did from the root. A segment whose
+// crossing walk reaches v finds again the crossings strictly inside v's part
+// of it; a crossing at an end of that part was found above v, and its logged
+// intersection cut is kept. Both go in the order of the whole construction:
+// by the other segment's priority.
+template <class K>
+void Bsp_builder<K>::steps(std::size_t v, const std::vector<Arrival>& arrivals) {
   std::set<std::uint32_t> walked;
   for (std::size_t k = 0; k < arrivals.size(); ++k) {
     const Arrival& a = arrivals[k];
@@ -75,6 +91,13 @@ void Bsp_builder<K>::replay(std::size_t v, const std::vector<Arrival>& arrivals)
   }
 }
 
+// Whether a step ends at n: at a leaf, and while rerouting at the frontier.
+template <class K>
+bool Bsp_builder<K>::stops(std::size_t n) const {
+  const Bsp_node& node = b_.nodes[n];
+  return node.kind == Cut_kind::leaf || (collect_ && cut_rank(node, p_.scene().rank) >= frontier_);
+}
+
 template <class K>
 std::size_t Bsp_builder<K>::add_leaf(const Cell& c, std::size_t parent) {
   Bsp_node leaf;
@@ -95,6 +118,7 @@ std::size_t Bsp_builder<K>::add_leaf(const Cell& c, std::size_t parent) {
 
 template <class K>
 void Bsp_builder<K>::split(std::size_t n, Cut_kind kind, const Site_point& q) {
+  if (collect_) return;  // rerouting: the frontier's replay splits
   Cell left = b_.nodes[n].cell, right = left;
   left.right = q;
   right.left = q;
@@ -108,6 +132,7 @@ void Bsp_builder<K>::split(std::size_t n, Cut_kind kind, const Site_point& q) {
 
 template <class K>
 void Bsp_builder<K>::split_edge(std::size_t n, std::uint32_t s) {
+  if (collect_) return;
   Cell below = b_.nodes[n].cell, above = below;
   below.roof = s;
   above.floor = s;
@@ -121,7 +146,11 @@ void Bsp_builder<K>::split_edge(std::size_t n, std::uint32_t s) {
 
 template <class K>
 void Bsp_builder<K>::arrive(std::size_t n, const Arrival& a) {
-  if (log_) log_->at[n].push_back(a);
+  if (collect_) {
+    if (n != origin_) (*collect_)[n].push_back(a);
+  } else if (log_) {
+    log_->at[n].push_back(a);
+  }
   p_.at_node(static_cast<std::int32_t>(n));
 }
 
@@ -133,7 +162,7 @@ std::size_t Bsp_builder<K>::locate(std::size_t from, const Arrival& a) {
   std::size_t n = from;
   for (;;) {
     arrive(n, a);
-    if (b_.nodes[n].kind == Cut_kind::leaf) return n;
+    if (stops(n)) return n;
     n = step(n, a);
   }
 }
@@ -163,11 +192,8 @@ void Bsp_builder<K>::insert_crossings(std::size_t node, std::uint32_t i, const S
     for (const std::int8_t dir : {std::int8_t(1), std::int8_t(-1)})
       kept.push_back({Arrival::Kind::intersection, i, Site_point::crossing(i, j), {}, dir});
   });
-  const auto& rank = p_.scene().rank;
-  const auto other = [&](const Arrival& c) { return c.a.a == i ? c.a.b : c.a.a; };
-  std::stable_sort(kept.begin(), kept.end(), [&](const Arrival& x, const Arrival& y) {
-    return rank[other(x)] != rank[other(y)] ? rank[other(x)] < rank[other(y)] : x.dir > y.dir;
-  });
+  std::stable_sort(kept.begin(), kept.end(),
+                   [&](const Arrival& x, const Arrival& y) { return located_before(x, y, p_.scene().rank); });
   for (const Arrival& c : kept) {
     // A crossing found below `node` is located from the root by the whole
     // construction: its signs above `node` are certificates too.
@@ -188,7 +214,23 @@ void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
     p_.at_node(static_cast<std::int32_t>(path[k]));
     if (step(path[k], a) != path[k - 1])
       throw Bsp_contradiction("cylindrical BSP: a crossing found below a node does not reach it");
+    if (log_) log_in_order(log_->at[path[k]], a, p_.scene().rank);
   }
+}
+
+bool located_before(const Arrival& x, const Arrival& y, const std::vector<std::size_t>& rank) {
+  const auto other = [&](const Arrival& c) { return c.a.a == c.segment ? c.a.b : c.a.a; };
+  return rank[other(x)] != rank[other(y)] ? rank[other(x)] < rank[other(y)] : x.dir > y.dir;
+}
+
+void log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank) {
+  const std::size_t r = rank[a.segment];
+  auto at = std::partition_point(log.begin(), log.end(), [&](const Arrival& x) { return rank[x.segment] < r; });
+  while (at != log.end() && rank[at->segment] == r &&
+         (at->kind == Arrival::Kind::vertex || at->kind == Arrival::Kind::crossings ||
+          (at->kind == Arrival::Kind::intersection && located_before(*at, a, rank))))
+    ++at;
+  if (at == log.end() || *at != a) log.insert(at, a);
 }
 
 // Visits the part from a.a to a.b of segment a.segment down the subtree of
@@ -198,6 +240,7 @@ template <class K>
 template <class Leaf, class Crossing>
 void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Crossing& crossing) {
   arrive(n, a);
+  if (stops(n)) return leaf(n);
   const Bsp_node node = b_.nodes[n];  // a copy: `leaf` adds nodes
   const auto left = static_cast<std::size_t>(node.child[0]), right = static_cast<std::size_t>(node.child[1]);
   const std::uint32_t i = a.segment;
@@ -219,7 +262,7 @@ void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Cros
     walk(right, second, leaf, crossing);
   };
   switch (node.kind) {
-    case Cut_kind::leaf: leaf(n); return;
+    case Cut_kind::leaf: return;  // stops() above
     case Cut_kind::vertex:
     case Cut_kind::intersection: {
       const Site_point& c = node.point;
@@ -231,6 +274,46 @@ void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Cros
       const int at_from = p_.order_at(from, i, j, t_).sign, at_to = p_.order_at(to, i, j, t_).sign;
       if (at_from != 0 && at_to != 0 && at_from != at_to) crossing(j);
       return go(at_from, at_to, Site_point::crossing(i, j));
+    }
+  }
+}
+
+std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank) {
+  switch (node.kind) {
+    case Cut_kind::leaf: return rank.size();
+    case Cut_kind::vertex: return rank[node.point.a / 2];
+    case Cut_kind::intersection: return std::max(rank[node.point.a], rank[node.point.b]);
+    case Cut_kind::edge: return rank[node.segment];
+  }
+  return rank.size();
+}
+
+void decided_keys(const Bsp_node& node, const Arrival& a, std::vector<Segment_certificate_key>& out) {
+  using Key = Segment_certificate_key;
+  const auto x_order = [&](const Site_point& p, const Site_point& q) {
+    if (p != q) out.push_back({Key::Kind::x_order, std::min(p, q), std::max(p, q), 0, 0});
+  };
+  const auto side = [&](const Site_point& p, std::uint32_t s) {
+    if (!p.on(s)) out.push_back({Key::Kind::side, p, {}, s, 0});
+  };
+  const bool locates = a.kind == Arrival::Kind::vertex || a.kind == Arrival::Kind::intersection;
+  switch (node.kind) {
+    case Cut_kind::leaf: return;
+    case Cut_kind::vertex:
+    case Cut_kind::intersection:
+      x_order(a.a, node.point);
+      if (!locates) x_order(a.b, node.point);
+      return;
+    case Cut_kind::edge: {
+      const std::uint32_t i = a.segment, j = node.segment;
+      if (locates) return side(a.a, j);
+      // Segment_predicates::order_at: a point on either line asks the side of the other.
+      for (const Site_point& q : {a.a, a.b}) {
+        if (q.on(i)) side(q, j);
+        else if (q.on(j)) side(q, i);
+        else out.push_back({Key::Kind::order_at, q, {}, i, j});
+      }
+      return;
     }
   }
 }

@@ -196,29 +196,56 @@ std::vector<Site_point> Kinetic_segment_bsp<K>::crossings_below(std::size_t v) c
 }
 
 template <class K>
-bool Kinetic_segment_bsp<K>::replay(std::size_t v, std::size_t& added) {
-  const std::string before = tree_.text(v);
-  const std::vector<Arrival> arrivals = log_.at[v];
-  const std::vector<Site_point> was = crossings_below(v);
-  for (const std::size_t n : tree_.preorder(v)) {
-    forget(n);
-    if (n != v) log_.free.push_back(n);
+bool Kinetic_segment_bsp<K>::replay(const std::vector<std::size_t>& roots, std::size_t& added) {
+  std::vector<std::string> before;
+  std::vector<std::vector<Arrival>> arrivals;
+  std::vector<Site_point> was, is;
+  for (const std::size_t v : roots) {
+    before.push_back(tree_.text(v));
+    arrivals.push_back(log_.at[v]);
+    const std::vector<Site_point> x = crossings_below(v);
+    was.insert(was.end(), x.begin(), x.end());
+    for (const std::size_t n : tree_.preorder(v)) {
+      forget(n);
+      if (n != v) log_.free.push_back(n);
+    }
   }
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
-  builder.replay(v, arrivals);
+  bool changed = false;
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    builder.replay(roots[k], arrivals[k]);
+    const std::vector<Site_point> x = crossings_below(roots[k]);
+    is.insert(is.end(), x.begin(), x.end());
+    changed = changed || tree_.text(roots[k]) != before[k];
+  }
   added += builder.added();
-  // A crossing cut below v before and nowhere now (both of a crossing's cuts
-  // lie below the node where it is found, and one found above v is kept):
-  // its certificates above v go.
-  const std::vector<Site_point> is = crossings_below(v);
+  // A crossing cut below a root before and nowhere now (both of a crossing's
+  // cuts lie below the node where it is found, and one found above a root is
+  // kept; a crossing may move from one root's subtree to another's): its
+  // certificates above the roots go.
+  std::sort(was.begin(), was.end());
+  std::sort(is.begin(), is.end());
   std::vector<Site_point> gone;
   std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(gone));
+  gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
   for (const Site_point& x : gone) {
     const auto it = by_crossing_.find(x);
     if (it == by_crossing_.end()) continue;
     for (const auto& [key, node] : std::vector(it->second)) drop(key, node);
   }
-  return tree_.text(v) != before;
+  // And its location, logged above the roots, too.
+  if (!gone.empty())
+    for (const std::size_t v : roots)
+      for (std::int32_t a = tree_.nodes[v].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent) {
+        auto& log = log_.at[static_cast<std::size_t>(a)];
+        log.erase(std::remove_if(log.begin(), log.end(),
+                                 [&](const Arrival& x) {
+                                   return x.kind == Arrival::Kind::intersection &&
+                                          std::binary_search(gone.begin(), gone.end(), x.a);
+                                 }),
+                  log.end());
+      }
+  return changed;
 }
 
 template <class K>
@@ -237,16 +264,13 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   }
   const Time t = *next_event_time();
   Batch b{t, {}, {}, false, 0, 0, 0};
-  std::vector<std::int32_t> nodes;
-  std::vector<Segment_certificate_key> unplaced;
+  std::vector<Failing> failing;
   while (!queue_.empty() && (stale(queue_.front()) || k_.compare(queue_.front().time, t) == 0)) {
     if (!stale(queue_.front())) {
       const auto& key = queue_.front().key;
       b.failing.push_back(key);
       ++b.events[static_cast<std::size_t>(event_of(key, scene_.rank))];
-      const auto& at = certs_.at(key).nodes;
-      nodes.insert(nodes.end(), at.begin(), at.end());
-      if (std::find(at.begin(), at.end(), -1) != at.end()) unplaced.push_back(key);
+      failing.emplace_back(key, certs_.at(key).nodes);
     }
     pop();
   }
@@ -256,7 +280,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   now_ = t;
   // The failing certificates go first: those decided again get a new failure time.
   for (const auto& key : b.failing) certs_.erase(key);
-  b.changed = guarded([&] { b.changed = update(std::move(nodes), unplaced, b.nodes_rebuilt); }) || b.changed;
+  b.changed = guarded([&] { b.changed = update(failing, b); }) || b.changed;
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certs_.size();
   return b;
@@ -290,31 +314,40 @@ bool Kinetic_segment_bsp<K>::validate(const Time& t) {
 }
 
 template <class K>
-bool Kinetic_segment_bsp<K>::update(std::vector<std::int32_t> nodes,
-                                    const std::vector<Segment_certificate_key>& unplaced, std::size_t& made) {
+bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& b) {
   if (update_ == Segment_update::rebuild) {
     const std::string before = tree_.text();
     rebuild();
-    made += tree_.counts().nodes;
+    b.nodes_rebuilt += tree_.counts().nodes;
     return tree_.text() != before;
   }
   // The topmost of the nodes: a node below another is replayed with it. A
   // sign decided at no node (a flip certificate) has nothing to replay: what
   // a flip changes, other signs decided in the segment's cells tell.
+  std::vector<std::int32_t> nodes;
+  for (const auto& f : failing) nodes.insert(nodes.end(), f.second.begin(), f.second.end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   nodes.erase(std::remove(nodes.begin(), nodes.end(), -1), nodes.end());
-  bool changed = false;
+  std::vector<std::size_t> roots;
   for (const std::int32_t n : nodes) {
     bool below = false;
     for (std::int32_t a = tree_.nodes[static_cast<std::size_t>(n)].parent; a >= 0 && !below;
          a = tree_.nodes[static_cast<std::size_t>(a)].parent)
       below = std::binary_search(nodes.begin(), nodes.end(), a);
-    if (!below) changed = replay(static_cast<std::size_t>(n), made) || changed;
+    if (below) continue;
+    const auto u = static_cast<std::size_t>(n);
+    std::optional<std::vector<std::size_t>> frontier;
+    if (update_ == Segment_update::local) frontier = frontier_replay(u, failing, nodes);
+    ++(frontier ? b.frontier_replays : b.subtree_replays);
+    if (frontier) roots.insert(roots.end(), frontier->begin(), frontier->end());
+    else roots.push_back(u);
   }
+  const bool changed = replay(roots, b.nodes_rebuilt);
   // The signs decided at no node, gone with the failure, decided again.
   pred_.at_node(-1);
-  for (const auto& key : unplaced) pred_.compare_x(key.p, key.q, now_);
+  for (const auto& [key, at] : failing)
+    if (std::find(at.begin(), at.end(), -1) != at.end()) pred_.compare_x(key.p, key.q, now_);
   return changed;
 }
 
@@ -346,8 +379,7 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
   for (auto it = indexed.begin(); it != indexed.end();)
     if (certs_.count(*it)) named.push_back(*it++);
     else it = indexed.erase(it);
-  std::vector<std::int32_t> nodes;
-  std::vector<Segment_certificate_key> unplaced;
+  std::vector<Failing> failing;
   for (const auto& key : named) {
     Certificate& c = certs_.at(key);
     std::vector<P> polys;
@@ -361,8 +393,7 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
     else if (key.kind == Kind::side) pred_.side(key.p, key.i, now_);
     else pred_.order_at(key.p, key.i, key.j, now_);
     if (sign != c.sign) {
-      nodes.insert(nodes.end(), c.nodes.begin(), c.nodes.end());
-      if (std::find(c.nodes.begin(), c.nodes.end(), -1) != c.nodes.end()) unplaced.push_back(key);
+      failing.emplace_back(key, c.nodes);
       certs_.erase(key);
       continue;
     }
@@ -370,10 +401,10 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
     schedule(key, c);
   }
   pred_.record(recorder());
-  std::size_t made = 0;
+  Batch b{now_, {}, {}, false, 0, 0, 0};
   bool tree_changed = false;
-  if (!nodes.empty())
-    tree_changed = guarded([&] { tree_changed = update(std::move(nodes), unplaced, made); }) || tree_changed;
+  if (!failing.empty())
+    tree_changed = guarded([&] { tree_changed = update(failing, b); }) || tree_changed;
   return tree_changed;
 }
 

@@ -20,7 +20,7 @@ const char* const simulate_help =
     "usage: kvd simulate SCENE [--events N] [--until T] [--validate every|end|none] [--seed S]\n"
     "                    [--kernel exact|double|mpfr:BITS] [--epsilon E] [--no-filter]\n"
     "                    [--certificates reduced|full] [--queue tree|heap]\n"
-    "                    [--update local|reinsert|rebuild] [--upkeep local|all]\n"
+    "                    [--update local|reinsert|subtree|rebuild] [--upkeep local|all]\n"
     "                    [--collisions reverse|stop]\n"
     "                    [--trace FILE] [--list] [--json]\n"
     "\n"
@@ -38,8 +38,10 @@ const char* const simulate_help =
     "                    features within the subtree of the nodes that decided\n"
     "                    them; reinsert: the same sites dragged out of the whole\n"
     "                    tree and inserted again from the root; rebuild: the\n"
-    "                    reference, a build just after each batch (segment\n"
-    "                    scenes: local or rebuild)\n"
+    "                    reference, a build just after each batch. Segment\n"
+    "                    scenes take local (the frontier replay where it\n"
+    "                    applies), subtree (the subtrees of the failures'\n"
+    "                    topmost nodes replayed whole) or rebuild\n"
     "  --upkeep U        local (default): after a batch only the nodes whose\n"
     "                    cut, fragment or ancestors changed, or that hold a failed\n"
     "                    certificate, make their reduced certificates again; all:\n"
@@ -346,6 +348,7 @@ int simulate(Args& args) {
   std::string kernel = "exact";
   bool list = false, filter = true;
   std::optional<kinetic::Update> update;
+  bool subtree = false;
   std::vector<std::string> triangle_only;  // flags a segment scene refuses
   while (!args.done()) {
     const std::string& a = args.next();
@@ -369,10 +372,14 @@ int simulate(Args& args) {
     else if (a == "--queue")
       o.queue = choice_option<kinetic::Queue_kind>(
           "simulate", a, args.value(a), {{"tree", kinetic::Queue_kind::tree}, {"heap", kinetic::Queue_kind::heap}});
-    else if (a == "--update")
-      update = choice_option<kinetic::Update>(
-          "simulate", a, args.value(a),
-          {{"local", kinetic::Update::local}, {"reinsert", kinetic::Update::reinsert}, {"rebuild", kinetic::Update::rebuild}});
+    else if (a == "--update") {
+      const std::string v = args.value(a);
+      if (v == "subtree") subtree = true;  // segment scenes only
+      else
+        update = choice_option<kinetic::Update>(
+            "simulate", a, v,
+            {{"local", kinetic::Update::local}, {"reinsert", kinetic::Update::reinsert}, {"rebuild", kinetic::Update::rebuild}});
+    }
     else if (a == "--upkeep")
       o.upkeep = choice_option<kinetic::Upkeep>(
           "simulate", a, args.value(a), {{"local", kinetic::Upkeep::local}, {"all", kinetic::Upkeep::all}});
@@ -392,12 +399,14 @@ int simulate(Args& args) {
     if (o.validate == kinetic::Validation::end)
       throw Usage_error("kvd simulate: --validate end: a segment scene takes every or none");
     if (update == kinetic::Update::reinsert)
-      throw Usage_error("kvd simulate: --update reinsert: a segment scene takes local or rebuild");
+      throw Usage_error("kvd simulate: --update reinsert: a segment scene takes local, subtree or rebuild");
     return segment_simulate(sa, text,
                             {o.max_events, o.until, o.validate == kinetic::Validation::every, kernel, epsilon, filter, list,
-                             update == kinetic::Update::rebuild ? segments::Segment_update::rebuild
-                                                                : segments::Segment_update::local});
+                             subtree                               ? segments::Segment_update::subtree
+                             : update == kinetic::Update::rebuild ? segments::Segment_update::rebuild
+                                                                  : segments::Segment_update::local});
   }
+  if (subtree) throw Usage_error("kvd simulate: --update subtree: a triangle scene takes local, reinsert or rebuild");
   const scene::Scene s = sa.read_scene("simulate", text);
   if (o.until) require_in_span("simulate", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd simulate");

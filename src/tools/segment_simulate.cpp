@@ -53,9 +53,11 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
   }
   if (kin.stuck()) stopped = "stuck";
   std::array<std::size_t, 4> events{}, changed_by{};
-  std::size_t changed = 0, simultaneous = 0;
+  std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
   std::vector<double> ms, rebuilt;
   for (const auto& b : batches) {
+    frontier += b.frontier_replays;
+    subtree += b.subtree_replays;
     rebuilt.push_back(static_cast<double>(b.nodes_rebuilt));
     for (std::size_t e = 0; e < 4; ++e) {
       events[e] += b.events[e];
@@ -83,7 +85,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
           if (b.events[e]) kinds[segments::segment_event_names[e]] = b.events[e];
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
                         {"failing", b.failing.size()}, {"events", kinds}, {"changed", b.changed},
-                        {"certificates", b.certificates}, {"nodes_rebuilt", b.nodes_rebuilt}});
+                        {"certificates", b.certificates}, {"nodes_rebuilt", b.nodes_rebuilt},
+                        {"frontier_replays", b.frontier_replays}, {"subtree_replays", b.subtree_replays}});
       }
     Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
               {"failures", failures}, {"simultaneous_batches", simultaneous}, {"changed_batches", changed},
@@ -94,8 +97,9 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", kin.certificates()},
               {"update_ms", {{"mean", decimal(ms_text(mean))}, {"median", decimal(ms_text(median(ms)))},
                              {"max", decimal(ms_text(max))}}},
-              {"update", o.update == segments::Segment_update::local ? "local" : "rebuild"},
-              {"nodes_rebuilt_median", median(rebuilt)}, {"filter", filter_json(k)},
+              {"update", segments::segment_update_names[static_cast<int>(o.update)]},
+              {"nodes_rebuilt_median", median(rebuilt)},
+              {"replays", {{"frontier", frontier}, {"subtree", subtree}}}, {"filter", filter_json(k)},
               {"recovery", recovery_json(kin.recovery())}};
     if (o.list) j["batch_list"] = list;
     std::cout << json_line(j) << "\n";
@@ -118,7 +122,9 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << kin.certificates()
               << " certificates\nupdate (ms):   mean " << ms_text(mean) << ", median " << ms_text(median(ms))
               << ", max " << ms_text(max) << "\nnodes made:    median " << median(rebuilt) << " a batch ("
-              << (o.update == segments::Segment_update::local ? "local" : "rebuild") << ")\n";
+              << segments::segment_update_names[static_cast<int>(o.update)] << ")\n";
+    if (o.update != segments::Segment_update::rebuild)
+      std::cout << "replays:       " << frontier << " at the frontier, " << subtree << " of whole subtrees\n";
     if (kin.recovery().detected()) std::cout << "recovery:      " << recovery_text(kin.recovery()) << "\n";
   }
   for (const auto& f : kin.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";

@@ -10,16 +10,21 @@
 // epsilon-minimum in the floating-point ones. Each failure is classified as
 // the paper's vertex, edge, intersection or flip event (event_of).
 //
-// The local update replays, in the subtree of each topmost node where a
+// The subtree update replays, in the subtree of each topmost node u where a
 // failing certificate was decided, the insertion steps that reached it
 // (kvd/detail/segments/bsp_builder.hpp; proofs/segment-local-update.md): the
-// rest of the tree, and its certificates, stay. A flip is local too: the
-// construction walks each segment from endpoint 0 to endpoint 1 whichever is
-// left, so the signs a flip changes are all decided in the cells of the
-// segment's own cuts, and the replay is the paper's (section 3.1.4) update of
-// the subtrees of the cells it crosses, not O(1). This is not yet the paper's
-// constant-size surgery (LeftShave and the splits of sections 3.1.1-3.1.4):
-// its cost is the size of the replayed subtrees.
+// rest of the tree, and its certificates, stay. The local update (the
+// default) replays less: when the signs that changed at u are those of one
+// segment s's steps, and u's cut is older than s, only s's steps are decided
+// again from u down to the frontier (the first nodes of cuts of s or later
+// segments: the leaves of B_{s-1} under u), and only the frontier nodes whose
+// arrivals changed are replayed; otherwise it replays u's subtree. A flip is
+// local too: the construction walks each segment from endpoint 0 to endpoint
+// 1 whichever is left, so the signs a flip changes are all decided in the
+// cells of the segment's own cuts, and the replay is the paper's (section
+// 3.1.4) update of the subtrees of the cells it crosses, not O(1). This is
+// not the paper's constant-size surgery (LeftShave and the splits of
+// sections 3.1.1-3.1.4): its cost is that of the replayed subtrees.
 //
 // Floating-point kernels only: rounding can make a construction's signs
 // contradict each other (Bsp_contradiction). The run then builds the whole
@@ -46,9 +51,12 @@
 
 namespace kvd::segments {
 
-// How the tree just after a batch is made: by the local replay (local), or
-// by building the whole tree again (rebuild, the reference).
-enum class Segment_update { local, rebuild };
+// How the tree just after a batch is made: by the frontier replay where it
+// applies (local), by replaying the topmost subtrees whole (subtree, the
+// previous local update), or by building the whole tree again (rebuild, the
+// reference). All three make the same trees and certificates.
+enum class Segment_update { local, subtree, rebuild };
+inline constexpr const char* segment_update_names[] = {"local", "subtree", "rebuild"};
 
 template <class K>
 class Kinetic_segment_bsp {
@@ -63,6 +71,9 @@ public:
     std::size_t certificates = 0;                  // in force after the batch
     double update_seconds = 0;                     // the tree and its certificates made again
     std::size_t nodes_rebuilt = 0;                 // nodes made again (all of them with rebuild)
+    // The topmost nodes of the failures updated by the frontier replay, and
+    // those whose subtree was replayed whole (local and subtree updates).
+    std::size_t frontier_replays = 0, subtree_replays = 0;
   };
 
   // The scene is copied. With `validate`, the tree in force is compared,
@@ -135,11 +146,17 @@ private:
   typename Segment_predicates<K>::Recorder recorder();
   // Queues the certificate's next failure after now, within the span.
   void schedule(const Segment_certificate_key& key, Certificate& c);
-  // The tree just after now, given the nodes where the signs that changed
-  // were decided, and those of them decided at no node (flip certificates,
-  // decided again); whether it changed, and the nodes made.
-  bool update(std::vector<std::int32_t> nodes, const std::vector<Segment_certificate_key>& unplaced,
-              std::size_t& made);
+  // A certificate whose sign changed, with the nodes where it was decided
+  // (-1: at no node, a flip certificate, decided again after the update).
+  using Failing = std::pair<Segment_certificate_key, std::vector<std::int32_t>>;
+  // The tree just after now; whether it changed, and the nodes made.
+  bool update(const std::vector<Failing>& failing, Batch& b);
+  // The frontier replay at the topmost node u (see above; `nodes`: every
+  // failing node, sorted): the segment's steps decided again and its logs
+  // and certificates above the frontier made anew; returns the frontier
+  // nodes to replay, or none when it does not apply (and nothing changed).
+  std::optional<std::vector<std::size_t>> frontier_replay(std::size_t u, const std::vector<Failing>& failing,
+                                                          const std::vector<std::int32_t>& nodes);
   void rebuild();
   // Compares the tree in force with a fresh build strictly between now and
   // t. Floating-point kernels: a stale tree is replaced by the fresh build,
@@ -150,8 +167,9 @@ private:
   // Whether the tree was built again.
   template <class F>
   bool guarded(F f);
-  // Replays the subtree of v; whether its text changed.
-  bool replay(std::size_t v, std::size_t& added);
+  // Replays the subtrees of the roots (none below another); whether one's
+  // text changed.
+  bool replay(const std::vector<std::size_t>& roots, std::size_t& added);
   void forget(std::size_t node);
   // The crossings with an intersection cut in the subtree of v.
   std::vector<Site_point> crossings_below(std::size_t v) const;

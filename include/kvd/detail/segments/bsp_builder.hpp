@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "kvd/segments/cylindrical_bsp.hpp"
@@ -24,13 +25,38 @@ struct Arrival {
   std::uint32_t segment = 0;
   Site_point a, b;  // vertex: the endpoint; intersection: the crossing; walks: the part from a to b (endpoint 0's way first)
   std::int8_t dir = 0;  // intersection: +1 the leaf above the crossing, -1 below
+  friend bool operator==(const Arrival&, const Arrival&) = default;
 };
 
-// The arrivals at every node, and the node slots free for reuse.
+// The arrivals at every node, and the node slots free for reuse. A node's
+// arrivals are in build order, so by the priority rank of their segment, and
+// within one segment by phase: vertex, crossings, intersection, edges. They
+// are those of the whole construction at the current time: a replay below a
+// node logs there the crossings it finds anew, and takes away those gone.
 struct Build_log {
   std::vector<std::vector<Arrival>> at;
   std::vector<std::size_t> free;
 };
+
+// The place of the insertion that made a node's cut in the priority order
+// (`rank`: Segment_scene::rank); a leaf's is past every segment. It does not
+// decrease down any path: each insertion splits leaves of the tree before it.
+std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank);
+
+// Whether intersection arrival x of a segment comes before y of the same
+// segment in build order: by the other segment's priority, above first.
+bool located_before(const Arrival& x, const Arrival& y, const std::vector<std::size_t>& rank);
+
+// Inserts intersection arrival a into a node's log at its place in build
+// order, unless it is there: for a crossing found below a replayed node,
+// whose location from the root the replay decides above that node (trace).
+void log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank);
+
+// The certificate keys that the arrival decides at the node, read off the
+// node's cut and the arrival's points without arithmetic: the keys that
+// Bsp_builder's step and walk ask the predicates for there (none at a leaf,
+// and none where a sign is 0 by identity). A key does not depend on the sign.
+void decided_keys(const Bsp_node& node, const Arrival& a, std::vector<Segment_certificate_key>& out);
 
 template <class K>
 class Bsp_builder {
@@ -47,10 +73,21 @@ public:
   // Makes the subtree of v again from `arrivals` (v's log before the change),
   // v reset to a leaf with its cell. The nodes below v must have been freed.
   void replay(std::size_t v, const std::vector<Arrival>& arrivals);
+  // The arrivals of one segment at u (of rank `rank`, as logged there),
+  // decided again from u down to the frontier: the first nodes whose cut is
+  // of rank `rank` or later, or leaves. Nothing is split and no log is
+  // written: `at` gets the arrivals at every node below u that they reach,
+  // frontier nodes included, in build order, as replay would log them
+  // (crossings found again, and located from u after their signs above u are
+  // decided). proofs/segment-local-update.md, "Frontier replay".
+  void reroute(std::size_t u, const std::vector<Arrival>& arrivals, std::size_t rank,
+               std::map<std::size_t, std::vector<Arrival>>& at);
   // The nodes added since the builder was made.
   std::size_t added() const { return added_; }
 
 private:
+  void steps(std::size_t v, const std::vector<Arrival>& arrivals);
+  bool stops(std::size_t n) const;
   std::size_t add_leaf(const Cell& c, std::size_t parent);
   void split(std::size_t n, Cut_kind kind, const Site_point& q);
   void split_edge(std::size_t n, std::uint32_t s);
@@ -68,6 +105,11 @@ private:
   Cylindrical_bsp& b_;
   Build_log* log_;
   std::size_t added_ = 0;
+  // While rerouting: the frontier's rank, and where arrivals are collected
+  // instead of logged.
+  std::size_t frontier_ = 0;
+  std::map<std::size_t, std::vector<Arrival>>* collect_ = nullptr;
+  std::size_t origin_ = 0;  // the node rerouted from: its arrivals stay
 };
 
 }  // namespace kvd::segments

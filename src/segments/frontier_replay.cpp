@@ -1,0 +1,159 @@
+// The frontier replay of the kinetic segment BSP
+// (kvd/segments/kinetic_segment_bsp.hpp; proofs/segment-local-update.md,
+// "Frontier replay"): when the signs that changed at the topmost node u are
+// those of one segment's steps, only those steps are decided again below u,
+// down to the leaves of the tree before that segment, and only the subtrees
+// there whose arrivals changed are replayed.
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
+
+namespace kvd::segments {
+
+namespace {
+
+using Key = Segment_certificate_key;
+
+// The arrivals of the segment of rank r in a log (a range: a log is in rank order).
+std::pair<std::size_t, std::size_t> block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
+                                          std::size_t r) {
+  const auto from = std::partition_point(log.begin(), log.end(), [&](const Arrival& a) { return rank[a.segment] < r; });
+  const auto to = std::partition_point(from, log.end(), [&](const Arrival& a) { return rank[a.segment] == r; });
+  return {static_cast<std::size_t>(from - log.begin()), static_cast<std::size_t>(to - log.begin())};
+}
+
+std::set<Key> keys_of(const Bsp_node& node, const std::vector<Arrival>& arrivals) {
+  std::vector<Key> keys;
+  for (const Arrival& a : arrivals) decided_keys(node, a, keys);
+  return {keys.begin(), keys.end()};
+}
+
+bool decides(const Bsp_node& node, const std::vector<Arrival>& log, const Key& key) {
+  std::vector<Key> keys;
+  return std::any_of(log.begin(), log.end(), [&](const Arrival& a) {
+    keys.clear();
+    decided_keys(node, a, keys);
+    return std::find(keys.begin(), keys.end(), key) != keys.end();
+  });
+}
+
+}  // namespace
+
+template <class K>
+std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(std::size_t u,
+                                                                                const std::vector<Failing>& failing,
+                                                                                const std::vector<std::int32_t>& nodes) {
+  const auto& rank = scene_.rank;
+  const auto node = [&](std::size_t n) -> const Bsp_node& { return tree_.nodes[n]; };
+  // The segment whose steps decided the failing keys at n, when there is
+  // one: a key decided at n by no logged step was decided by the location
+  // of a crossing found below a replayed node (not logged above it).
+  const auto changing = [&](std::size_t n) -> std::optional<std::uint32_t> {
+    std::set<Key> failing_here, seen;
+    for (const auto& [key, at] : failing)
+      if (std::find(at.begin(), at.end(), static_cast<std::int32_t>(n)) != at.end()) failing_here.insert(key);
+    std::optional<std::uint32_t> segment;
+    std::vector<Key> keys;
+    for (const Arrival& a : log_.at[n]) {
+      keys.clear();
+      decided_keys(node(n), a, keys);
+      bool uses = false;
+      for (const Key& k : keys)
+        if (failing_here.count(k)) {
+          seen.insert(k);
+          uses = true;
+        }
+      if (!uses) continue;
+      if (segment && *segment != a.segment) return std::nullopt;
+      segment = a.segment;
+    }
+    if (seen.size() != failing_here.size()) return std::nullopt;
+    return segment;
+  };
+  const std::optional<std::uint32_t> segment = changing(u);
+  if (!segment) return std::nullopt;
+  const std::size_t r = rank[*segment];
+  if (cut_rank(node(u), rank) >= r) return std::nullopt;  // u is the frontier: its replay is all there is
+  const auto frontier = [&](std::size_t n) { return cut_rank(node(n), rank) >= r; };
+
+  // A failing node below u above the frontier must be the segment's alone:
+  // its steps are decided again there. Below, the frontier node above it is
+  // replayed.
+  std::set<std::size_t> replayed;
+  for (const std::int32_t f : nodes) {
+    std::size_t top = static_cast<std::size_t>(f);
+    bool under = false;
+    for (std::int32_t a = node(top).parent; a >= 0; a = node(static_cast<std::size_t>(a)).parent) {
+      if (static_cast<std::size_t>(a) == u) {
+        under = true;
+        break;
+      }
+      if (frontier(static_cast<std::size_t>(a))) top = static_cast<std::size_t>(a);
+    }
+    if (!under) continue;
+    if (frontier(top)) replayed.insert(top);
+    else if (changing(top) != segment) return std::nullopt;
+  }
+
+  // The segment's steps below u before: its block in the logs of the nodes
+  // its crossing walk reaches through the nodes above the frontier.
+  std::map<std::size_t, std::vector<Arrival>> before, after;
+  const auto mine = [&](std::size_t n) {
+    const auto& log = log_.at[n];
+    const auto [from, to] = block(log, rank, r);
+    return std::vector<Arrival>(log.begin() + static_cast<std::ptrdiff_t>(from), log.begin() + static_cast<std::ptrdiff_t>(to));
+  };
+  std::vector<std::size_t> stack;
+  for (const std::int32_t c : node(u).child) stack.push_back(static_cast<std::size_t>(c));
+  while (!stack.empty()) {
+    const std::size_t n = stack.back();
+    stack.pop_back();
+    std::vector<Arrival> steps = mine(n);
+    if (steps.empty()) continue;
+    before[n] = std::move(steps);
+    if (!frontier(n))
+      for (const std::int32_t c : node(n).child) stack.push_back(static_cast<std::size_t>(c));
+  }
+
+  // Decided again from u: the certificates at u, above the frontier, and
+  // above u for crossings found anew, are recorded.
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  builder.reroute(u, mine(u), r, after);
+
+  // The segment's block in every log reached before or after is the new one.
+  std::set<std::size_t> reached;
+  for (const auto& [n, steps] : before) reached.insert(n);
+  for (const auto& [n, steps] : after) reached.insert(n);
+  for (const std::size_t n : reached) {
+    auto& log = log_.at[n];
+    const auto [from, to] = block(log, rank, r);
+    const std::vector<Arrival>&now = after[n], &was_here = before[n];
+    log.erase(log.begin() + static_cast<std::ptrdiff_t>(from), log.begin() + static_cast<std::ptrdiff_t>(to));
+    log.insert(log.begin() + static_cast<std::ptrdiff_t>(from), now.begin(), now.end());
+    if (frontier(n)) {
+      if (was_here != now) replayed.insert(n);
+      continue;
+    }
+    // Above the frontier the cut stays; a key the segment's steps decided
+    // here before and do not now goes, unless another step decides it.
+    const std::set<Key> old_keys = keys_of(node(n), was_here), new_keys = keys_of(node(n), now);
+    for (const Key& k : old_keys) {
+      if (new_keys.count(k) || decides(node(n), log, k)) continue;
+      drop(k, static_cast<std::int32_t>(n));
+      auto& listed = node_keys_[n];
+      listed.erase(std::remove(listed.begin(), listed.end(), k), listed.end());
+    }
+  }
+  return std::vector<std::size_t>(replayed.begin(), replayed.end());
+}
+
+#define KVD_INSTANTIATE_FRONTIER_REPLAY(K)                                                                     \
+  template std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(                   \
+      std::size_t, const std::vector<Kinetic_segment_bsp<K>::Failing>&, const std::vector<std::int32_t>&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_FRONTIER_REPLAY)
+
+}  // namespace kvd::segments
