@@ -566,6 +566,21 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
   CHECK(run("simulate " + dir + "over-endpoint.json --list").out.find("t = 3 (3): 1 failing, 1 edge, tree changed") !=
         std::string::npos);
   CHECK(run("simulate " + dir + "turning-vertical.json --json").out.find("\"flip\": 1") != std::string::npos);
+  // The three updates: the same batches; the local one counts its frontier
+  // replays, the subtree one none.
+  const Run local = run("simulate " + dir + "random-100.json --events 60 --json"),
+            subtree = run("simulate " + dir + "random-100.json --events 60 --json --update subtree");
+  REQUIRE(local.status == 0);
+  REQUIRE(subtree.status == 0);
+  CHECK(local.out.find("\"update\": \"local\"") != std::string::npos);
+  CHECK(subtree.out.find("\"update\": \"subtree\"") != std::string::npos);
+  CHECK(subtree.out.find("\"replays\": {\"frontier\": 0,") != std::string::npos);
+  CHECK(local.out.find("\"replays\": {\"frontier\": 0,") == std::string::npos);
+  CHECK(run("simulate " + dir + "random-100.json --events 60 --update subtree").out.find("replays:       0 at the frontier") !=
+        std::string::npos);
+  const Run triangles = run("simulate " + std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json --update subtree", "2>&1");
+  CHECK(triangles.status == 2);
+  CHECK(triangles.out.find("--update subtree: a triangle scene takes local, reinsert or rebuild") != std::string::npos);
   // Flags of triangle scenes, a time outside the span: usage errors.
   const Run queue = run("simulate " + dir + "over-endpoint.json --queue heap", "2>&1");
   CHECK(queue.status == 2);

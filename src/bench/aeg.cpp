@@ -11,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 #include "bench.hpp"
@@ -35,6 +36,7 @@ using segments::Segment_family;
 
 const char* const aeg_help =
     "usage: kvd bench aeg [--sizes N,N,...] [--quadratic-up-to N] [--kinetic-sizes N,N,...]\n"
+    "                     [--subtree-up-to N] [--rebuild-up-to N]\n"
     "                     [--events N] [--rotating N] [--repeats N] [--out DIR]\n"
     "\n"
     "The cylindrical BSP of intersecting segments (seed 003) against the paper's\n"
@@ -52,23 +54,27 @@ const char* const aeg_help =
     "            scene of --rotating segments (default 20, 0: none) turning\n"
     "            through vertical (segments-rotating, flip events) over its\n"
     "            whole span: the exact kinetic BSP without validation, its\n"
-    "            local update and its rebuild run batch by batch in turn;\n"
+    "            local update, its subtree update (up to --subtree-up-to\n"
+    "            segments, default 3200) and its rebuild (up to\n"
+    "            --rebuild-up-to, default 800) run batch by batch in turn;\n"
     "            failures by event kind (vertex, edge, intersection, flip) and\n"
     "            their rates per unit of time over m n (flips: over m), the\n"
-    "            mean and max update per batch of both, the nodes the local\n"
-    "            update made again, and whether both had the same batches and\n"
-    "            end in the same tree (they must)\n"
+    "            mean and max update per batch of each, the nodes the local\n"
+    "            and the subtree update made again, the share of failures the\n"
+    "            frontier replay handled, and whether all had the same batches\n"
+    "            and end in the same tree (they must)\n"
     "Writes DIR/aeg.csv, DIR/aeg.md (also to stdout) and, with gnuplot on the\n"
     "PATH, DIR/aeg.svg (the two ratios and the update time against n);\n"
     "progress goes to stderr.\n"
     "\n"
     "  --sizes            segments of the static part (default\n"
     "                     100,200,400,800,1600,3200,6400,12800)\n"
-    "  --kinetic-sizes    segments of the kinetic part (default 100,200,400,800)\n"
+    "  --kinetic-sizes    segments of the kinetic part (default\n"
+    "                     100,200,400,800,1600,3200,6400,12800)\n"
     "  --out              the output directory (default bench-out), created if\n"
     "                     needed\n"
     "\n"
-    "Exit status: 0 on success, 1 when the local update and the rebuild differ,\n"
+    "Exit status: 0 on success, 1 when the updates differ,\n"
     "2 on bad input.\n";
 
 segments::Segment_scene generated_segments(Segment_family family, std::size_t n, std::size_t m, Crossings crossings) {
@@ -122,7 +128,8 @@ double mean(const std::vector<double>& v) {
 double max(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
 
 // Up to the batch holding the `events`-th failure, or the span's end.
-Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m, std::size_t events) {
+Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m, std::size_t events,
+                            const Config& c) {
   Kinetic_row row;
   row.family = family == Segment_family::rotating ? "rotating" : "random";
   row.n = n;
@@ -131,39 +138,49 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   row.k = segments::count_crossings(s, s.start);
   using Kinetic = segments::Kinetic_segment_bsp<Exact_kernel>;
   const Exact_kernel k;
-  Kinetic local(k, s, false, segments::Segment_update::local), subtree(k, s, false, segments::Segment_update::subtree),
-      rebuild(k, s, false, segments::Segment_update::rebuild);
+  Kinetic local(k, s, false, segments::Segment_update::local);
+  std::optional<Kinetic> subtree, rebuild;
+  row.subtree_run = n <= c.subtree_up_to;
+  row.rebuild_run = n <= c.rebuild_up_to;
+  if (row.subtree_run) subtree.emplace(k, s, false, segments::Segment_update::subtree);
+  if (row.rebuild_run) rebuild.emplace(k, s, false, segments::Segment_update::rebuild);
   const std::string label =
       "kvd bench aeg: " + row.family + ", n = " + std::to_string(n) + ", m = " + std::to_string(m);
   const auto progress = cli::progress_every_few_seconds(label);
   std::vector<double> local_ms, subtree_ms, rebuild_ms, nodes, subtree_nodes;
   std::size_t frontier = 0, replays = 0;
-  while (row.failures < events) {
-    const bool more = local.next_event_time().has_value();
-    if (more != rebuild.next_event_time().has_value() || more != subtree.next_event_time().has_value()) {
+  // The reference updates run batch by batch with the local one, and must
+  // process the same batches.
+  const auto follow = [&](std::optional<Kinetic>& other, const Kinetic::Batch& a, std::vector<double>& ms,
+                          std::vector<double>* made) {
+    if (!other) return;
+    if (!other->next_event_time()) {
       row.same = false;
-      break;
+      return;
     }
-    if (!more) break;
+    const Kinetic::Batch b = other->advance();
+    row.same = row.same && k.compare(a.time, b.time) == 0 && a.failing == b.failing;
+    ms.push_back(1e3 * b.update_seconds);
+    if (made) made->push_back(static_cast<double>(b.nodes_rebuilt));
+  };
+  while (row.failures < events && local.next_event_time()) {
     const Kinetic::Batch a = local.advance();
-    const Kinetic::Batch m = subtree.advance();
-    const Kinetic::Batch b = rebuild.advance();
-    row.same = row.same && k.compare(a.time, b.time) == 0 && a.failing == b.failing &&
-               k.compare(m.time, b.time) == 0 && m.failing == b.failing;
+    follow(subtree, a, subtree_ms, &subtree_nodes);
+    follow(rebuild, a, rebuild_ms, nullptr);
     frontier += a.frontier_replays;
     replays += a.frontier_replays + a.subtree_replays;
-    subtree_ms.push_back(1e3 * m.update_seconds);
-    subtree_nodes.push_back(static_cast<double>(m.nodes_rebuilt));
     ++row.batches;
     row.failures += a.failing.size();
     row.changed += a.changed;
     for (std::size_t e = 0; e < row.events.size(); ++e) row.events[e] += a.events[e];
     local_ms.push_back(1e3 * a.update_seconds);
-    rebuild_ms.push_back(1e3 * b.update_seconds);
     nodes.push_back(static_cast<double>(a.nodes_rebuilt));
     progress(row.batches, row.failures);
   }
-  row.same = row.same && local.tree().text() == rebuild.tree().text() && subtree.tree().text() == rebuild.tree().text();
+  const std::string tree = local.tree().text();
+  const bool more = local.next_event_time().has_value() && row.failures < events;
+  for (auto* other : {&subtree, &rebuild})
+    if (*other) row.same = row.same && (*other)->tree().text() == tree && (more || !(*other)->next_event_time() == !local.next_event_time());
   // A run that reached the span's end saw all of it (generated scenes have one).
   row.time = (local.next_event_time() ? k.to_double(local.now()) : s.end->get_d()) - s.start.get_d();
   row.local_mean_ms = mean(local_ms);
@@ -176,8 +193,9 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   row.subtree_nodes_median = cli::median(subtree_nodes);
   row.frontier_share = replays ? static_cast<double>(frontier) / static_cast<double>(replays) : 0;
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
-            << cli::fixed(row.local_mean_ms, 2) << " ms, subtree " << cli::fixed(row.subtree_mean_ms, 2)
-            << " ms, rebuild " << cli::fixed(row.rebuild_mean_ms, 2) << " ms"
+            << cli::fixed(row.local_mean_ms, 2) << " ms"
+            << (row.subtree_run ? ", subtree " + cli::fixed(row.subtree_mean_ms, 2) + " ms" : std::string())
+            << (row.rebuild_run ? ", rebuild " + cli::fixed(row.rebuild_mean_ms, 2) + " ms" : std::string())
             << (row.same ? "" : "; the updates differ") << "\n";
   return row;
 }
@@ -195,6 +213,8 @@ int aeg(cli::Args& args) {
     if (a == "--sizes") c.sizes = sizes_option("aeg", args.value(a), a, "segments");
     else if (a == "--quadratic-up-to") c.quadratic_up_to = args.unsigned_value(a);
     else if (a == "--kinetic-sizes") c.kinetic_sizes = sizes_option("aeg", args.value(a), a, "segments");
+    else if (a == "--subtree-up-to") c.subtree_up_to = args.unsigned_value(a);
+    else if (a == "--rebuild-up-to") c.rebuild_up_to = args.unsigned_value(a);
     else if (a == "--events") c.events = args.unsigned_value(a);
     else if (a == "--rotating") c.rotating = args.unsigned_value(a);
     else if (a == "--repeats") {
@@ -213,10 +233,10 @@ int aeg(cli::Args& args) {
   std::vector<Kinetic_row> kinetics;
   for (std::size_t n : c.kinetic_sizes)
     for (std::size_t m : {n, n / 2})
-      if (m > 0) kinetics.push_back(measure_kinetic(Segment_family::random, n, m, c.events));
+      if (m > 0) kinetics.push_back(measure_kinetic(Segment_family::random, n, m, c.events, c));
   if (c.rotating > 0) {
     constexpr std::size_t the_span = std::numeric_limits<std::size_t>::max();
-    kinetics.push_back(measure_kinetic(Segment_family::rotating, c.rotating, c.rotating, the_span));
+    kinetics.push_back(measure_kinetic(Segment_family::rotating, c.rotating, c.rotating, the_span, c));
   }
 
   cli::write_atomically("bench aeg", c.out + "/aeg.csv", csv(statics, kinetics));
@@ -229,7 +249,7 @@ int aeg(cli::Args& args) {
   std::cerr << "kvd bench aeg: wrote " << c.out << "/aeg.md, " << c.out << "/aeg.csv"
             << (plotted ? ", " + c.out + "/aeg.svg" : std::string()) << "\n";
   if (!std::ranges::all_of(kinetics, &Kinetic_row::same)) {
-    std::cerr << "kvd bench aeg: the local update and the rebuild differ\n";
+    std::cerr << "kvd bench aeg: the updates differ\n";
     return 1;
   }
   return 0;

@@ -39,7 +39,8 @@ struct Kinetic_row {
   // The failures' topmost nodes that the local update handled by the
   // frontier replay, over all of them.
   double frontier_share = 0;
-  bool same = true;  // all three had the same batches (times, failing certificates) and end in the same tree
+  bool subtree_run = false, rebuild_run = false;  // within --subtree-up-to and --rebuild-up-to
+  bool same = true;  // the updates run had the same batches (times, failing certificates) and end in the same tree
   // Failures of `event` per unit of time, over m n (flips: over m); 0
   // without time or moving segments.
   double rate(std::size_t event) const;
@@ -48,7 +49,8 @@ struct Kinetic_row {
 struct Config {
   std::vector<std::size_t> sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};
   std::size_t quadratic_up_to = 400;
-  std::vector<std::size_t> kinetic_sizes{100, 200, 400, 800};
+  std::vector<std::size_t> kinetic_sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};
+  std::size_t subtree_up_to = 3200, rebuild_up_to = 800;  // the reference updates, up to these sizes
   std::size_t rotating = 20;  // segments of the rotating scene (run over its span), 0: none
   std::size_t events = 50;
   int repeats = 3;

@@ -33,9 +33,12 @@ const Kinetic_row* find(const std::vector<Kinetic_row>& rows, std::size_t n, std
   return nullptr;
 }
 
-std::string value_or_nan(const Kinetic_row* r, double Kinetic_row::*ms) {
-  return r ? cli::approx(r->*ms) : "NaN";
+std::string value_or_nan(const Kinetic_row* r, double Kinetic_row::*ms, bool Kinetic_row::*run) {
+  return r && r->*run ? cli::approx(r->*ms) : "NaN";
 }
+
+// A reference update's cell: empty (CSV) or a dash (Markdown) where it did not run.
+std::string cell(bool run, const std::string& value, const char* none) { return run ? value : none; }
 
 }  // namespace
 
@@ -77,12 +80,14 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
     for (std::size_t e : r.events) out += "," + std::to_string(e);
     out += "," + significant(r.time, 6);
     for (std::size_t e = 0; e < r.events.size(); ++e) out += "," + significant(r.rate(e), 6);
+    const bool m = r.subtree_run, b = r.rebuild_run;
     out += "," + cli::fixed(r.local_mean_ms, 3) + "," + cli::fixed(r.local_max_ms, 3) + "," +
-           cli::fixed(r.subtree_mean_ms, 3) + "," + cli::fixed(r.subtree_max_ms, 3) + "," +
-           cli::fixed(r.rebuild_mean_ms, 3) + "," + cli::fixed(r.rebuild_max_ms, 3) + "," +
-           ratio(r.subtree_mean_ms, r.local_mean_ms, 3) + "," + ratio(r.rebuild_mean_ms, r.local_mean_ms, 3) + "," +
-           cli::fixed(r.nodes_rebuilt_median, 1) + "," + cli::fixed(r.subtree_nodes_median, 1) + "," +
-           cli::fixed(r.frontier_share, 3) + "," + (r.same ? "yes" : "no") + "\n";
+           cell(m, cli::fixed(r.subtree_mean_ms, 3), "") + "," + cell(m, cli::fixed(r.subtree_max_ms, 3), "") + "," +
+           cell(b, cli::fixed(r.rebuild_mean_ms, 3), "") + "," + cell(b, cli::fixed(r.rebuild_max_ms, 3), "") + "," +
+           cell(m, ratio(r.subtree_mean_ms, r.local_mean_ms, 3), "") + "," +
+           cell(b, ratio(r.rebuild_mean_ms, r.local_mean_ms, 3), "") + "," + cli::fixed(r.nodes_rebuilt_median, 1) +
+           "," + cell(m, cli::fixed(r.subtree_nodes_median, 1), "") + "," + cli::fixed(r.frontier_share, 3) + "," +
+           (r.same ? "yes" : "no") + "\n";
   }
   return out;
 }
@@ -131,7 +136,9 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
          "linearly. *Update*: the tree and its certificates made just after a batch, ms per batch; subtree / local "
          "and rebuild / local of the means; *nodes made again*: median per batch, local / subtree; *frontier*: "
          "the share of the failures' topmost nodes the local update handled by the frontier replay. *Same*: the "
-         "three updates had the same batches (times and failing certificates) and end in the same tree.\n\n"
+         "updates had the same batches (times and failing certificates) and end in the same tree. The subtree update "
+         "runs up to " + std::to_string(c.subtree_up_to) + " segments and the rebuild up to " +
+         std::to_string(c.rebuild_up_to) + " (`--subtree-up-to`, `--rebuild-up-to`; —: not run).\n\n"
          "| scene | n | m | k | batches (changed) | failures: vertex / edge / intersection / flip | time | vertex / mn "
          "| edge / mn | intersection / mn | flip / m | local: mean | max | subtree: mean | max | rebuild: mean | max "
          "| subtree / local | rebuild / local | nodes made again | frontier | same |\n"
@@ -142,12 +149,15 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
     for (std::size_t e = 0; e < r.events.size(); ++e) out += (e ? " / " : "") + std::to_string(r.events[e]);
     out += " | " + significant(r.time, 3);
     for (std::size_t e = 0; e < r.events.size(); ++e) out += " | " + significant(r.rate(e), 3);
+    const bool m = r.subtree_run, b = r.rebuild_run;
     out += " | " + cli::fixed(r.local_mean_ms, 2) + " | " + cli::fixed(r.local_max_ms, 1) + " | " +
-           cli::fixed(r.subtree_mean_ms, 2) + " | " + cli::fixed(r.subtree_max_ms, 1) + " | " +
-           cli::fixed(r.rebuild_mean_ms, 2) + " | " + cli::fixed(r.rebuild_max_ms, 1) + " | " +
-           ratio(r.subtree_mean_ms, r.local_mean_ms, 2) + " | " + ratio(r.rebuild_mean_ms, r.local_mean_ms, 2) +
-           " | " + cli::fixed(r.nodes_rebuilt_median, 0) + " / " + cli::fixed(r.subtree_nodes_median, 0) + " | " +
-           cli::fixed(r.frontier_share, 2) + " | " + (r.same ? "yes" : "**no**") + " |\n";
+           cell(m, cli::fixed(r.subtree_mean_ms, 2), "—") + " | " + cell(m, cli::fixed(r.subtree_max_ms, 1), "—") +
+           " | " + cell(b, cli::fixed(r.rebuild_mean_ms, 2), "—") + " | " +
+           cell(b, cli::fixed(r.rebuild_max_ms, 1), "—") + " | " +
+           cell(m, ratio(r.subtree_mean_ms, r.local_mean_ms, 2), "—") + " | " +
+           cell(b, ratio(r.rebuild_mean_ms, r.local_mean_ms, 2), "—") + " | " + cli::fixed(r.nodes_rebuilt_median, 0) +
+           " / " + cell(m, cli::fixed(r.subtree_nodes_median, 0), "—") + " | " + cli::fixed(r.frontier_share, 2) +
+           " | " + (r.same ? "yes" : "**no**") + " |\n";
   }
   if (plotted)
     out += "\n## Plot\n\nThe two quotients of the static trees, and the mean update per batch of the random "
@@ -175,10 +185,11 @@ std::string kinetic_plot_data(const std::vector<Kinetic_row>& kinetics) {
   for (const Kinetic_row& r : kinetics) {
     if (r.family != "random" || r.m != r.n) continue;
     const Kinetic_row* half = find(kinetics, r.n, r.n / 2);
-    out += std::to_string(r.n) + " " + cli::approx(r.local_mean_ms) + " " + cli::approx(r.subtree_mean_ms) + " " +
-           cli::approx(r.rebuild_mean_ms) + " " +
-           value_or_nan(half, &Kinetic_row::local_mean_ms) + " " + value_or_nan(half, &Kinetic_row::rebuild_mean_ms) +
-           "\n";
+    out += std::to_string(r.n) + " " + cli::approx(r.local_mean_ms) + " " +
+           value_or_nan(&r, &Kinetic_row::subtree_mean_ms, &Kinetic_row::subtree_run) + " " +
+           value_or_nan(&r, &Kinetic_row::rebuild_mean_ms, &Kinetic_row::rebuild_run) + " " +
+           (half ? cli::approx(half->local_mean_ms) : "NaN") + " " +
+           value_or_nan(half, &Kinetic_row::rebuild_mean_ms, &Kinetic_row::rebuild_run) + "\n";
   }
   return out;
 }

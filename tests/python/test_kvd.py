@@ -147,22 +147,30 @@ def test_segment_stepping_gives_the_batches_of_kvd_simulate(name):
         batches.append(b)
         assert b["structure_hash"] == k.tree["structure_hash"]  # the tree in force is the batch's
         assert all(event in ("vertex", "edge", "intersection", "flip") for _, _, event in b["failing"])
-    assert [(b["time"], len(b["failing"]), b["changed"], b["certificates"], b["nodes_rebuilt"]) for b in batches] == [
-        (t["time"], t["failing"], t["changed"], t["certificates"], t["nodes_rebuilt"]) for t in theirs["batch_list"]]
+    assert [(b["time"], len(b["failing"]), b["changed"], b["certificates"], b["nodes_rebuilt"], b["frontier_replays"],
+             b["subtree_replays"]) for b in batches] == [
+        (t["time"], t["failing"], t["changed"], t["certificates"], t["nodes_rebuilt"], t["frontier_replays"],
+         t["subtree_replays"]) for t in theirs["batch_list"]]
     assert k.summary["failures"] == theirs["failures"]
     assert k.summary["validations"] == theirs["validations"] and k.summary["validation_failures"] == []
     assert k.tree["nodes"] == theirs["nodes"] and k.summary["certificates"] == theirs["certificates"]
     assert k.events == batches
 
 
-def test_segment_local_and_rebuild_steps_agree_on_every_kernel():
+def test_segment_local_subtree_and_rebuild_steps_agree_on_every_kernel():
     s = kvd.load_segments(segment_file("random-100.json"))
     for kernel in ("exact", "double", "mpfr:113"):
         local = kvd.KineticSegments(s, kernel=kernel, events=40)
+        subtree = kvd.KineticSegments(s, kernel=kernel, events=40, update="subtree")
         rebuild = kvd.KineticSegments(s, kernel=kernel, events=40, update="rebuild")
-        a = [(b["time"], b["structure_hash"]) for b in iter(local.advance, None)]
-        assert a == [(b["time"], b["structure_hash"]) for b in iter(rebuild.advance, None)] and len(a) > 10
+        steps = list(iter(local.advance, None))
+        a = [(b["time"], b["structure_hash"]) for b in steps]
+        assert a == [(b["time"], b["structure_hash"]) for b in iter(subtree.advance, None)] and len(a) > 10
+        assert a == [(b["time"], b["structure_hash"]) for b in iter(rebuild.advance, None)]
         assert local.summary["recovery"]["unrepaired"] == 0
+        # Most failures take the frontier replay; the subtree update never does.
+        assert sum(b["frontier_replays"] for b in steps) > sum(b["subtree_replays"] for b in steps)
+        assert all(b["frontier_replays"] == 0 for b in subtree.events)
 
 
 def test_segment_bad_input_raises_value_errors():
