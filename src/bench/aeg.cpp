@@ -36,7 +36,7 @@ using segments::Segment_family;
 
 const char* const aeg_help =
     "usage: kvd bench aeg [--sizes N,N,...] [--quadratic-up-to N] [--kinetic-sizes N,N,...]\n"
-    "                     [--subtree-up-to N] [--rebuild-up-to N]\n"
+    "                     [--subtree-up-to N] [--rebuild-up-to N] [--kinetic-quadratic-up-to N]\n"
     "                     [--events N] [--rotating N] [--repeats N] [--out DIR]\n"
     "\n"
     "The cylindrical BSP of intersecting segments (seed 003) against the paper's\n"
@@ -49,7 +49,9 @@ const char* const aeg_help =
     "            time, exact and double, interleaved and repeated (--repeats,\n"
     "            default 3; medians)\n"
     "  kinetic   for each kinetic size n, all and half of the segments moving\n"
-    "            linearly (m = n, n/2), short segments, up to the batch holding\n"
+    "            linearly (m = n, n/2), short segments and, up to\n"
+    "            --kinetic-quadratic-up-to segments (default 200), long ones,\n"
+    "            up to the batch holding\n"
     "            the N-th certificate failure (--events, default 50); and a\n"
     "            scene of --rotating segments (default 20, 0: none) turning\n"
     "            through vertical (segments-rotating, flip events) over its\n"
@@ -129,12 +131,13 @@ double max(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_elem
 
 // Up to the batch holding the `events`-th failure, or the span's end.
 Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m, std::size_t events,
-                            const Config& c) {
+                            const Config& c, Crossings crossings = Crossings::linear) {
   Kinetic_row row;
   row.family = family == Segment_family::rotating ? "rotating" : "random";
+  row.crossings = crossings == Crossings::linear ? "linear" : "quadratic";
   row.n = n;
   row.m = m;
-  const segments::Segment_scene s = generated_segments(family, n, m, Crossings::linear);
+  const segments::Segment_scene s = generated_segments(family, n, m, crossings);
   row.k = segments::count_crossings(s, s.start);
   using Kinetic = segments::Kinetic_segment_bsp<Exact_kernel>;
   const Exact_kernel k;
@@ -145,7 +148,8 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   if (row.subtree_run) subtree.emplace(k, s, false, segments::Segment_update::subtree);
   if (row.rebuild_run) rebuild.emplace(k, s, false, segments::Segment_update::rebuild);
   const std::string label =
-      "kvd bench aeg: " + row.family + ", n = " + std::to_string(n) + ", m = " + std::to_string(m);
+      "kvd bench aeg: " + row.family + (row.crossings == "linear" ? "" : ", long segments") +
+      ", n = " + std::to_string(n) + ", m = " + std::to_string(m);
   const auto progress = cli::progress_every_few_seconds(label);
   std::vector<double> local_ms, subtree_ms, rebuild_ms, nodes, subtree_nodes;
   std::size_t frontier = 0, replays = 0;
@@ -178,9 +182,10 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
     progress(row.batches, row.failures);
   }
   const std::string tree = local.tree().text();
-  const bool more = local.next_event_time().has_value() && row.failures < events;
   for (auto* other : {&subtree, &rebuild})
-    if (*other) row.same = row.same && (*other)->tree().text() == tree && (more || !(*other)->next_event_time() == !local.next_event_time());
+    if (*other)
+      row.same = row.same && (*other)->tree().text() == tree &&
+                 (*other)->next_event_time().has_value() == local.next_event_time().has_value();
   // A run that reached the span's end saw all of it (generated scenes have one).
   row.time = (local.next_event_time() ? k.to_double(local.now()) : s.end->get_d()) - s.start.get_d();
   row.local_mean_ms = mean(local_ms);
@@ -215,6 +220,7 @@ int aeg(cli::Args& args) {
     else if (a == "--kinetic-sizes") c.kinetic_sizes = sizes_option("aeg", args.value(a), a, "segments");
     else if (a == "--subtree-up-to") c.subtree_up_to = args.unsigned_value(a);
     else if (a == "--rebuild-up-to") c.rebuild_up_to = args.unsigned_value(a);
+    else if (a == "--kinetic-quadratic-up-to") c.kinetic_quadratic_up_to = args.unsigned_value(a);
     else if (a == "--events") c.events = args.unsigned_value(a);
     else if (a == "--rotating") c.rotating = args.unsigned_value(a);
     else if (a == "--repeats") {
@@ -234,6 +240,10 @@ int aeg(cli::Args& args) {
   for (std::size_t n : c.kinetic_sizes)
     for (std::size_t m : {n, n / 2})
       if (m > 0) kinetics.push_back(measure_kinetic(Segment_family::random, n, m, c.events, c));
+  for (std::size_t n : c.kinetic_sizes)
+    for (std::size_t m : {n, n / 2})
+      if (m > 0 && n <= c.kinetic_quadratic_up_to)
+        kinetics.push_back(measure_kinetic(Segment_family::random, n, m, c.events, c, Crossings::quadratic));
   if (c.rotating > 0) {
     constexpr std::size_t the_span = std::numeric_limits<std::size_t>::max();
     kinetics.push_back(measure_kinetic(Segment_family::rotating, c.rotating, c.rotating, the_span, c));

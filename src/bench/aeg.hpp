@@ -28,6 +28,7 @@ struct Static_row {
 // by batch in turn.
 struct Kinetic_row {
   std::string family;  // "random" (linear motion) or "rotating"
+  std::string crossings = "linear";  // random: short segments (k = O(n)) or long ones ("quadratic": k = Θ(n²))
   std::size_t n = 0, m = 0;
   std::size_t k = 0;  // crossings at the start
   std::size_t batches = 0, failures = 0, changed = 0;  // changed: batches that changed the tree
@@ -51,6 +52,7 @@ struct Config {
   std::size_t quadratic_up_to = 400;
   std::vector<std::size_t> kinetic_sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};
   std::size_t subtree_up_to = 3200, rebuild_up_to = 800;  // the reference updates, up to these sizes
+  std::size_t kinetic_quadratic_up_to = 200;              // kinetic runs of long segments, up to this size
   std::size_t rotating = 20;  // segments of the rotating scene (run over its span), 0: none
   std::size_t events = 50;
   int repeats = 3;

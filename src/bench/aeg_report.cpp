@@ -19,7 +19,10 @@ std::string significant(double x, int digits) {
 
 std::string ratio(double a, double b, int digits) { return b > 0 ? cli::fixed(a / b, digits) : ""; }
 
-std::string label(const Kinetic_row& r) { return r.family == "rotating" ? "rotating" : "random, linear motion"; }
+std::string label(const Kinetic_row& r) {
+  if (r.family == "rotating") return "rotating";
+  return r.crossings == "linear" ? "random, linear motion" : "random, long segments, linear motion";
+}
 
 const Static_row* find(const std::vector<Static_row>& rows, std::size_t n, const std::string& crossings) {
   for (const Static_row& r : rows)
@@ -29,7 +32,7 @@ const Static_row* find(const std::vector<Static_row>& rows, std::size_t n, const
 
 const Kinetic_row* find(const std::vector<Kinetic_row>& rows, std::size_t n, std::size_t m) {
   for (const Kinetic_row& r : rows)
-    if (r.family == "random" && r.n == n && r.m == m) return &r;
+    if (r.family == "random" && r.crossings == "linear" && r.n == n && r.m == m) return &r;
   return nullptr;
 }
 
@@ -74,7 +77,7 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            ratio(r.build_exact_ms, r.build_double_ms, 3) + ",,,,,,,,,,,,,,,,,,,,,,,,\n";
   }
   for (const Kinetic_row& r : kinetics) {
-    out += "kinetic," + r.family + ",linear," + std::to_string(r.n) + "," + std::to_string(r.m) + "," +
+    out += "kinetic," + r.family + "," + r.crossings + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," +
            std::to_string(r.k) + ",,,,,,,,,,,," + std::to_string(r.batches) + "," + std::to_string(r.failures) + "," +
            std::to_string(r.changed);
     for (std::size_t e : r.events) out += "," + std::to_string(e);
@@ -87,7 +90,7 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            cell(m, ratio(r.subtree_mean_ms, r.local_mean_ms, 3), "") + "," +
            cell(b, ratio(r.rebuild_mean_ms, r.local_mean_ms, 3), "") + "," + cli::fixed(r.nodes_rebuilt_median, 1) +
            "," + cell(m, cli::fixed(r.subtree_nodes_median, 1), "") + "," + cli::fixed(r.frontier_share, 3) + "," +
-           (r.same ? "yes" : "no") + "\n";
+           cell(m || b, r.same ? "yes" : "no", "") + "\n";
   }
   return out;
 }
@@ -120,7 +123,10 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
   }
   out += "\n## Kinetic BSP against Lemmas 3.2-3.6\n\n"
          "`kvd generate segments-random --n N --moving M --seed 1` (short segments, linear motion) with m = n and "
-         "n/2 moving, and `kvd generate segments-rotating --n N --seed 1` (every segment turning about its "
+         "n/2 moving, the same with `--crossings quadratic` (long segments: k = Θ(n²)) up to " +
+         std::to_string(c.kinetic_quadratic_up_to) +
+         " segments (`--kinetic-quadratic-up-to`), and `kvd generate segments-rotating --n N --seed 1` (every "
+         "segment turning about its "
          "midpoint, through vertical at most once). The exact kinetic BSP without validation, with the local "
          "update (the frontier replay where it applies), the subtree update (the failures' topmost subtrees "
          "replayed whole: the local update before the frontier replay) and rebuilding the tree, batch by batch in "
@@ -157,7 +163,7 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
            cell(m, ratio(r.subtree_mean_ms, r.local_mean_ms, 2), "—") + " | " +
            cell(b, ratio(r.rebuild_mean_ms, r.local_mean_ms, 2), "—") + " | " + cli::fixed(r.nodes_rebuilt_median, 0) +
            " / " + cell(m, cli::fixed(r.subtree_nodes_median, 0), "—") + " | " + cli::fixed(r.frontier_share, 2) +
-           " | " + (r.same ? "yes" : "**no**") + " |\n";
+           " | " + cell(m || b, r.same ? "yes" : "**no**", "—") + " |\n";
   }
   if (plotted)
     out += "\n## Plot\n\nThe two quotients of the static trees, and the mean update per batch of the random "
@@ -183,7 +189,7 @@ std::string kinetic_plot_data(const std::vector<Kinetic_row>& kinetics) {
       "# n, then the mean ms per batch of local, subtree and rebuild with m = n, then of local and rebuild with "
       "m = n/2 (NaN: not run)\n";
   for (const Kinetic_row& r : kinetics) {
-    if (r.family != "random" || r.m != r.n) continue;
+    if (r.family != "random" || r.crossings != "linear" || r.m != r.n) continue;
     const Kinetic_row* half = find(kinetics, r.n, r.n / 2);
     out += std::to_string(r.n) + " " + cli::approx(r.local_mean_ms) + " " +
            value_or_nan(&r, &Kinetic_row::subtree_mean_ms, &Kinetic_row::subtree_run) + " " +

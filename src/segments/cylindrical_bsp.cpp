@@ -148,6 +148,9 @@ template <class K>
 void Bsp_builder<K>::arrive(std::size_t n, const Arrival& a) {
   if (collect_) {
     if (n != origin_) (*collect_)[n].push_back(a);
+    // The origin's arrivals come from above and stay, but a crossing found
+    // anew below it is located through it, as from the root.
+    else if (a.kind == Arrival::Kind::intersection && log_) log_in_order(log_->at[n], a, p_.scene().rank);
   } else if (log_) {
     log_->at[n].push_back(a);
   }
@@ -204,7 +207,7 @@ void Bsp_builder<K>::insert_crossings(std::size_t node, std::uint32_t i, const S
 }
 
 // Decides the steps of locating a.a from the root down to `to`, which must be
-// on the way, without logging them.
+// on the way, and logs them above `to` in build order (unless logged there).
 template <class K>
 void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
   std::vector<std::size_t> path{to};  // `to` and its ancestors, bottom up

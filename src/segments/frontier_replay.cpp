@@ -50,8 +50,8 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
   const auto& rank = scene_.rank;
   const auto node = [&](std::size_t n) -> const Bsp_node& { return tree_.nodes[n]; };
   // The segment whose steps decided the failing keys at n, when there is
-  // one: a key decided at n by no logged step was decided by the location
-  // of a crossing found below a replayed node (not logged above it).
+  // one (with exact logs every failing key at n has a logged step deciding
+  // it; one without is taken as a reason to replay u's subtree).
   const auto changing = [&](std::size_t n) -> std::optional<std::uint32_t> {
     std::set<Key> failing_here, seen;
     for (const auto& [key, at] : failing)
@@ -142,10 +142,7 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
     // here before and do not now goes, unless another step decides it.
     const std::set<Key> old_keys = keys_of(node(n), was_here), new_keys = keys_of(node(n), now);
     for (const Key& k : old_keys) {
-      if (new_keys.count(k) || decides(node(n), log, k)) continue;
-      drop(k, static_cast<std::int32_t>(n));
-      auto& listed = node_keys_[n];
-      listed.erase(std::remove(listed.begin(), listed.end(), k), listed.end());
+      if (!new_keys.count(k) && !decides(node(n), log, k)) unrecord(k, static_cast<std::int32_t>(n));
     }
   }
   return std::vector<std::size_t>(replayed.begin(), replayed.end());

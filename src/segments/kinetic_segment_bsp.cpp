@@ -177,6 +177,14 @@ void Kinetic_segment_bsp<K>::drop(const Segment_certificate_key& key, std::int32
   if (nodes.empty()) certs_.erase(it);
 }
 
+template <class K>
+void Kinetic_segment_bsp<K>::unrecord(const Segment_certificate_key& key, std::int32_t node) {
+  drop(key, node);
+  if (node < 0) return;
+  auto& listed = node_keys_[static_cast<std::size_t>(node)];
+  listed.erase(std::remove(listed.begin(), listed.end(), key), listed.end());
+}
+
 // The node's certificates lose it; those decided nowhere else go.
 template <class K>
 void Kinetic_segment_bsp<K>::forget(std::size_t node) {
@@ -233,18 +241,22 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<std::size_t>& roots, std::
     if (it == by_crossing_.end()) continue;
     for (const auto& [key, node] : std::vector(it->second)) drop(key, node);
   }
-  // And its location, logged above the roots, too.
-  if (!gone.empty())
-    for (const std::size_t v : roots)
-      for (std::int32_t a = tree_.nodes[v].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent) {
-        auto& log = log_.at[static_cast<std::size_t>(a)];
-        log.erase(std::remove_if(log.begin(), log.end(),
-                                 [&](const Arrival& x) {
-                                   return x.kind == Arrival::Kind::intersection &&
-                                          std::binary_search(gone.begin(), gone.end(), x.a);
-                                 }),
-                  log.end());
-      }
+  // And its location, logged above the roots, too (each ancestor once).
+  std::set<std::size_t> above;
+  for (const std::size_t v : roots) {
+    if (gone.empty()) break;
+    std::int32_t a = tree_.nodes[v].parent;
+    while (a >= 0 && above.insert(static_cast<std::size_t>(a)).second) a = tree_.nodes[static_cast<std::size_t>(a)].parent;
+  }
+  for (const std::size_t a : above) {
+    auto& log = log_.at[a];
+    log.erase(std::remove_if(log.begin(), log.end(),
+                             [&](const Arrival& x) {
+                               return x.kind == Arrival::Kind::intersection &&
+                                      std::binary_search(gone.begin(), gone.end(), x.a);
+                             }),
+              log.end());
+  }
   return changed;
 }
 
@@ -321,6 +333,11 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
     b.nodes_rebuilt += tree_.counts().nodes;
     return tree_.text() != before;
   }
+  // The failing certificates are gone (advance, set_motion); so are their
+  // entries at the nodes that decided them, since the frontier replay keeps
+  // some of those nodes and decides the keys there again.
+  for (const auto& [key, at] : failing)
+    for (const std::int32_t n : at) unrecord(key, n);
   // The topmost of the nodes: a node below another is replayed with it. A
   // sign decided at no node (a flip certificate) has nothing to replay: what
   // a flip changes, other signs decided in the segment's cells tell.
@@ -423,6 +440,13 @@ std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> Kinet
     list.emplace_back(key, std::move(nodes));
   }
   return list;
+}
+
+template <class K>
+std::vector<std::vector<Arrival>> Kinetic_segment_bsp<K>::arrivals() const {
+  std::vector<std::vector<Arrival>> out;
+  for (const std::size_t n : tree_.preorder()) out.push_back(log_.at[n]);
+  return out;
 }
 
 #define KVD_INSTANTIATE_KINETIC_SEGMENT_BSP(K) template class Kinetic_segment_bsp<K>;

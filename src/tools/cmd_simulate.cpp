@@ -374,11 +374,13 @@ int simulate(Args& args) {
           "simulate", a, args.value(a), {{"tree", kinetic::Queue_kind::tree}, {"heap", kinetic::Queue_kind::heap}});
     else if (a == "--update") {
       const std::string v = args.value(a);
-      if (v == "subtree") subtree = true;  // segment scenes only
-      else
-        update = choice_option<kinetic::Update>(
-            "simulate", a, v,
-            {{"local", kinetic::Update::local}, {"reinsert", kinetic::Update::reinsert}, {"rebuild", kinetic::Update::rebuild}});
+      subtree = v == "subtree";  // segment scenes only; the last --update holds
+      update = subtree ? std::nullopt
+                       : std::optional(choice_option<kinetic::Update>(
+                             "simulate", a, v,
+                             {{"local", kinetic::Update::local},
+                              {"reinsert", kinetic::Update::reinsert},
+                              {"rebuild", kinetic::Update::rebuild}}));
     }
     else if (a == "--upkeep")
       o.upkeep = choice_option<kinetic::Upkeep>(

@@ -88,6 +88,10 @@ public:
   // The tree in force, numbered afresh (a copy: the run edits its own).
   Cylindrical_bsp tree() const { return tree_.compacted(); }
   std::size_t certificates() const { return certs_.size(); }
+  // The construction's steps logged at each node of tree(), in its
+  // pre-order: those a construction at now makes (proofs/
+  // segment-local-update.md, "Exact logs"); for tests.
+  std::vector<std::vector<Arrival>> arrivals() const;
   // The certificates in force, each with the nodes (of tree()) where it was
   // decided (-1: at no node), in key order.
   std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> certificate_list() const;
@@ -171,6 +175,8 @@ private:
   // text changed.
   bool replay(const std::vector<std::size_t>& roots, std::size_t& added);
   void forget(std::size_t node);
+  // The key's decision at the node goes (drop), and the node's entry of it.
+  void unrecord(const Segment_certificate_key& key, std::int32_t node);
   // The crossings with an intersection cut in the subtree of v.
   std::vector<Site_point> crossings_below(std::size_t v) const;
   // Removes the certificate's decision at `node`, and the certificate with its last.

@@ -56,6 +56,10 @@ void log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector
 // node's cut and the arrival's points without arithmetic: the keys that
 // Bsp_builder's step and walk ask the predicates for there (none at a leaf,
 // and none where a sign is 0 by identity). A key does not depend on the sign.
+// An arrival logged while the node was a leaf decided nothing there: it is a
+// crossing walk of the segment that cut the node next, whose edge walk then
+// asks the same keys (at its own intersection cut), or keys no predicate
+// records (order_at of a segment's line with itself, at its own edge cut).
 void decided_keys(const Bsp_node& node, const Arrival& a, std::vector<Segment_certificate_key>& out);
 
 template <class K>
@@ -75,11 +79,12 @@ public:
   void replay(std::size_t v, const std::vector<Arrival>& arrivals);
   // The arrivals of one segment at u (of rank `rank`, as logged there),
   // decided again from u down to the frontier: the first nodes whose cut is
-  // of rank `rank` or later, or leaves. Nothing is split and no log is
-  // written: `at` gets the arrivals at every node below u that they reach,
-  // frontier nodes included, in build order, as replay would log them
-  // (crossings found again, and located from u after their signs above u are
-  // decided). proofs/segment-local-update.md, "Frontier replay".
+  // of rank `rank` or later, or leaves. Nothing is split, and the logs below
+  // u are left to the caller: `at` gets the arrivals at every node below u
+  // that they reach, frontier nodes included, in build order, as replay
+  // would log them (crossings found again, and located from u after their
+  // signs above u are decided; a crossing found anew is logged at u and
+  // above). proofs/segment-local-update.md, "Frontier replay".
   void reroute(std::size_t u, const std::vector<Arrival>& arrivals, std::size_t rank,
                std::map<std::size_t, std::vector<Arrival>>& at);
   // The nodes added since the builder was made.
