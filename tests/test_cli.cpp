@@ -768,5 +768,5 @@ TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds,
     CHECK(std::stoul(v["intersection_cuts"]) == 2 * std::stoul(v["k"]));
   }
   CHECK(rows["static"] == 3);   // linear 10 and 20, quadratic 10
-  CHECK(rows["kinetic"] == 3);  // m = 10 and 5, and the rotating scene
+  CHECK(rows["kinetic"] == 5);  // m = 10 and 5, short and long segments, and the rotating scene
 }
