@@ -79,10 +79,15 @@ TEST_CASE("segment differential: MPFR agrees on a rotating scene; double diverge
   CHECK_FALSE(m.first_divergence_event);
   CHECK(m.max_relative_time_error < mpq_class(1, 1) / (mpz_class(1) << 200));
   CHECK(m.max_time_error > 0);  // the times are irrational: rounding shows
-  // In double the events stay matched and in order, but rounding puts
-  // another tree after some of them.
+  // In double rounding puts another tree after some of the events, and may
+  // keep a certificate whose sign has changed, so that an event is missed
+  // (how many depends on the compiler's rounding of the same formulas: none
+  // in the g++ release build here, two in the clang sanitizer build); each
+  // missed event is reported.
   const auto d = segments::compare_with(exact, Double_kernel(), s);
-  CHECK(d.missed_events == 0);
+  std::size_t missed = 0;
+  for (const auto& e : d.events) missed += !e.inexact_event;
+  CHECK(d.missed_events == missed);
   CHECK(d.structure_mismatches > 0);
   REQUIRE(d.first_divergence_event);
   CHECK_FALSE(d.events[*d.first_divergence_event].structure_equal);
