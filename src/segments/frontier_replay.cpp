@@ -6,6 +6,7 @@
 // there whose arrivals changed are replayed.
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "kvd/detail/kernel/instantiate.hpp"
@@ -30,15 +31,6 @@ std::set<Key> keys_of(const Bsp_node& node, const std::vector<Arrival>& arrivals
   std::vector<Key> keys;
   for (const Arrival& a : arrivals) decided_keys(node, a, keys);
   return {keys.begin(), keys.end()};
-}
-
-bool decides(const Bsp_node& node, const std::vector<Arrival>& log, const Key& key) {
-  std::vector<Key> keys;
-  return std::any_of(log.begin(), log.end(), [&](const Arrival& a) {
-    keys.clear();
-    decided_keys(node, a, keys);
-    return std::find(keys.begin(), keys.end(), key) != keys.end();
-  });
 }
 
 }  // namespace
@@ -139,10 +131,14 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
       continue;
     }
     // Above the frontier the cut stays; a key the segment's steps decided
-    // here before and do not now goes, unless another step decides it.
-    const std::set<Key> old_keys = keys_of(node(n), was_here), new_keys = keys_of(node(n), now);
-    for (const Key& k : old_keys) {
-      if (!new_keys.count(k) && !decides(node(n), log, k)) unrecord(k, static_cast<std::int32_t>(n));
+    // here before and do not now goes, unless another step decides it (the
+    // keys of the whole log, read once, and only when some key may go).
+    const std::set<Key> new_keys = keys_of(node(n), now);
+    std::optional<std::set<Key>> all;
+    for (const Key& k : keys_of(node(n), was_here)) {
+      if (new_keys.count(k)) continue;
+      if (!all) all = keys_of(node(n), log);
+      if (!all->count(k)) unrecord(k, static_cast<std::int32_t>(n));
     }
   }
   return std::vector<std::size_t>(replayed.begin(), replayed.end());
