@@ -92,10 +92,11 @@ void Kinetic_segment_bsp<K>::index(const Segment_certificate_key& key) {
   if (++indexed_ <= 2 * certs_.size() + 64) return add(key);
   for (auto& keys : by_segment_) keys.clear();
   indexed_ = 0;
-  for (const auto& [k, c] : certs_) {
-    add(k);
-    ++indexed_;
-  }
+  for (const auto* m : {&certs_, &limbo_})
+    for (const auto& [k, c] : *m) {
+      add(k);
+      ++indexed_;
+    }
 }
 
 template <class K>
@@ -152,6 +153,7 @@ bool Kinetic_segment_bsp<K>::stale(const Entry& e) const {
 template <class K>
 void Kinetic_segment_bsp<K>::rebuild() {
   certs_.clear();
+  limbo_.clear();
   node_keys_.clear();
   by_crossing_.clear();
   queue_.clear();
@@ -174,7 +176,8 @@ void Kinetic_segment_bsp<K>::drop(const Segment_certificate_key& key, std::int32
   const auto at = std::find(nodes.begin(), nodes.end(), node);
   if (at == nodes.end()) return;  // made again since, elsewhere
   nodes.erase(at);
-  if (nodes.empty()) certs_.erase(it);
+  if (!nodes.empty()) return;
+  limbo_.insert(certs_.extract(it));
 }
 
 template <class K>
@@ -333,9 +336,26 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
     b.nodes_rebuilt += tree_.counts().nodes;
     return tree_.text() != before;
   }
-  // The failing certificates are gone (advance, set_motion); so are their
+  // The signs of the certificates in force hold (they fail later), and are
+  // read rather than computed again, whether their nodes stay or are made
+  // again; the failing ones are gone (advance, set_motion), and so are their
   // entries at the nodes that decided them, since the frontier replay keeps
   // some of those nodes and decides the keys there again.
+  pred_.held([this](const Segment_certificate_key& key) -> std::optional<int> {
+    if (const auto it = certs_.find(key); it != certs_.end()) return it->second.sign;
+    const auto it = limbo_.find(key);
+    if (it == limbo_.end()) return std::nullopt;
+    const int sign = it->second.sign;
+    certs_.insert(limbo_.extract(it));
+    return sign;
+  });
+  struct Done {
+    Kinetic_segment_bsp& run;
+    ~Done() {
+      run.pred_.held(nullptr);
+      run.limbo_.clear();
+    }
+  } done{*this};
   for (const auto& [key, at] : failing)
     for (const std::int32_t n : at) unrecord(key, n);
   // The topmost of the nodes: a node below another is replayed with it. A

@@ -129,6 +129,12 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
         return {s, Segment_rule::value};
       }
   }
+  if (held_)
+    if (const std::optional<int> s = held_(key)) {
+      ++counts_.held;
+      if (recorder_) recorder_(key, {}, node_, *s);
+      return {*s, Segment_rule::held};
+    }
   const std::vector<P> v = detail::factors_of(key, View<P>(endpoints_, &cache_));
   std::optional<std::vector<Poly<P>>> expanded;
   std::vector<P> deciding;

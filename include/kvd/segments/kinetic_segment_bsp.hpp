@@ -179,7 +179,8 @@ private:
   void unrecord(const Segment_certificate_key& key, std::int32_t node);
   // The crossings with an intersection cut in the subtree of v.
   std::vector<Site_point> crossings_below(std::size_t v) const;
-  // Removes the certificate's decision at `node`, and the certificate with its last.
+  // Removes the certificate's decision at `node`; with its last, the
+  // certificate goes to limbo_.
   void drop(const Segment_certificate_key& key, std::int32_t node);
   void push(const Entry& e);
   void pop();
@@ -196,6 +197,10 @@ private:
   Cylindrical_bsp tree_;
   Build_log log_;
   std::map<Segment_certificate_key, Certificate> certs_;
+  // During an update: the certificates in force at its start that have lost
+  // every node. One decided again is taken back, with its polynomials and
+  // its queue entry (its sign still holds); the rest are gone at the end.
+  std::map<Segment_certificate_key, Certificate> limbo_;
   std::vector<std::vector<Segment_certificate_key>> node_keys_;  // per node slot
   // Where the certificates naming a crossing were decided: when a replay
   // finds a crossing no longer, its certificates above the replayed subtree go.

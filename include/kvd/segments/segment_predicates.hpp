@@ -16,6 +16,10 @@
 //     zero, decided by rules 2-3. proofs/segment-perturbation.md proves that
 //     with the λ of `perturbation_lambda` some coefficient never vanishes,
 //     for every predicate here: a vanishing one is a bug (std::logic_error).
+// A kinetic run may name the signs it already knows (`held`): the sign of a
+// certificate in force, decided earlier by rules 2-4 and unchanged since
+// (none of its polynomials has a root between then and t), is taken as is,
+// without arithmetic (rule `held`).
 //
 // Points are homogeneous (X, Y, W). Endpoints are scaled so that W > 0 on the
 // whole span (the loader rejects a W that vanishes there); a derived point's
@@ -63,7 +67,7 @@ struct Site_point {
 // That is what makes every predicate's leading ε-coefficient non-zero.
 long perturbation_lambda(std::size_t e, std::size_t n);
 
-enum class Segment_rule { identity, value, after, perturbation };
+enum class Segment_rule { identity, value, after, perturbation, held };
 
 // A predicate with its arguments: the identity of a certificate.
 struct Segment_certificate_key {
@@ -104,6 +108,7 @@ struct Segment_sign {
 struct Segment_rule_counts {
   long identity = 0, value = 0, after = 0, perturbation = 0;
   long filtered = 0;  // of `value`, decided by the exact kernel's interval filter
+  long held = 0;      // taken from a certificate in force (Segment_predicates::held)
 };
 
 // The lines of the segments and the crossings of two, made once.
@@ -153,6 +158,11 @@ public:
       std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node, int sign)>;
   void record(Recorder r) const { recorder_ = std::move(r); }
   void at_node(std::int32_t n) const { node_ = n; }
+  // While set, a key it gives a sign for is decided by that sign, reported
+  // to the recorder with no polynomial (the caller holds them). Only for the
+  // certificates in force: their sign holds until their failure time.
+  using Held = std::function<std::optional<int>(const Segment_certificate_key&)>;
+  void held(Held h) const { held_ = std::move(h); }
   // Reads segment s's endpoints from the scene again (its motion changed),
   // with the sign of their W at `at`.
   void refresh(std::size_t segment, const Time& at);
@@ -172,6 +182,7 @@ private:
   mutable Geometry_cache<P> cache_;
   mutable Segment_rule_counts counts_;
   mutable Recorder recorder_;
+  mutable Held held_;
   mutable std::int32_t node_ = -1;
   std::shared_ptr<detail::Segment_filter> filter_;  // the exact kernel's, unless built without
 };
