@@ -26,6 +26,10 @@
 // not the paper's constant-size surgery (LeftShave and the splits of
 // sections 3.1.1-3.1.4): its cost is that of the replayed subtrees.
 //
+// An update reads the sign of every certificate in force it decides again,
+// instead of computing it (Segment_predicates::held): the sign holds until
+// the certificate's failure, which is later than now.
+//
 // Floating-point kernels only: rounding can make a construction's signs
 // contradict each other (Bsp_contradiction). The run then builds the whole
 // tree again at now, and failing that at now + 2^i epsilon, i = 1, ...,
