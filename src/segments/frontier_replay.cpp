@@ -27,11 +27,16 @@ std::pair<std::size_t, std::size_t> block(const std::vector<Arrival>& log, const
   return {static_cast<std::size_t>(from - log.begin()), static_cast<std::size_t>(to - log.begin())};
 }
 
-std::set<Key> keys_of(const Bsp_node& node, const std::vector<Arrival>& arrivals) {
+// The keys the arrivals decide at the node, sorted, each once.
+std::vector<Key> keys_of(const Bsp_node& node, const std::vector<Arrival>& arrivals) {
   std::vector<Key> keys;
   for (const Arrival& a : arrivals) decided_keys(node, a, keys);
-  return {keys.begin(), keys.end()};
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
 }
+
+bool has(const std::vector<Key>& sorted, const Key& k) { return std::binary_search(sorted.begin(), sorted.end(), k); }
 
 }  // namespace
 
@@ -133,12 +138,12 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
     // Above the frontier the cut stays; a key the segment's steps decided
     // here before and do not now goes, unless another step decides it (the
     // keys of the whole log, read once, and only when some key may go).
-    const std::set<Key> new_keys = keys_of(node(n), now);
-    std::optional<std::set<Key>> all;
+    const std::vector<Key> new_keys = keys_of(node(n), now);
+    std::optional<std::vector<Key>> all;
     for (const Key& k : keys_of(node(n), was_here)) {
-      if (new_keys.count(k)) continue;
+      if (has(new_keys, k)) continue;
       if (!all) all = keys_of(node(n), log);
-      if (!all->count(k)) unrecord(k, static_cast<std::int32_t>(n));
+      if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
     }
   }
   return std::vector<std::size_t>(replayed.begin(), replayed.end());

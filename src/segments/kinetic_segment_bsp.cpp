@@ -416,6 +416,7 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
   for (auto it = indexed.begin(); it != indexed.end();)
     if (certs_.count(*it)) named.push_back(*it++);
     else it = indexed.erase(it);
+  std::sort(named.begin(), named.end());  // the index's order is its hash's
   std::vector<Failing> failing;
   for (const auto& key : named) {
     Certificate& c = certs_.at(key);
@@ -459,6 +460,7 @@ std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> Kinet
     std::sort(nodes.begin(), nodes.end());
     list.emplace_back(key, std::move(nodes));
   }
+  std::sort(list.begin(), list.end());
   return list;
 }
 

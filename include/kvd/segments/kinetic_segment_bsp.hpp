@@ -46,6 +46,8 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "kvd/detail/kinetic/root_cache.hpp"
@@ -200,17 +202,18 @@ private:
   Segment_predicates<K> pred_;
   Cylindrical_bsp tree_;
   Build_log log_;
-  std::map<Segment_certificate_key, Certificate> certs_;
+  using Certificates = std::unordered_map<Segment_certificate_key, Certificate, Segment_certificate_key_hash>;
+  Certificates certs_;
   // During an update: the certificates in force at its start that have lost
   // every node. One decided again is taken back, with its polynomials and
   // its queue entry (its sign still holds); the rest are gone at the end.
-  std::map<Segment_certificate_key, Certificate> limbo_;
+  Certificates limbo_;
   std::vector<std::vector<Segment_certificate_key>> node_keys_;  // per node slot
   // Where the certificates naming a crossing were decided: when a replay
   // finds a crossing no longer, its certificates above the replayed subtree go.
   std::map<Site_point, std::vector<std::pair<Segment_certificate_key, std::int32_t>>> by_crossing_;
   // The certificate keys naming each segment, for set_motion (see index()).
-  std::vector<std::set<Segment_certificate_key>> by_segment_;
+  std::vector<std::unordered_set<Segment_certificate_key, Segment_certificate_key_hash>> by_segment_;
   std::size_t indexed_ = 0;  // keys added to by_segment_ since it was last made
   std::vector<Entry> queue_;                                     // a min-heap on time
   std::uint64_t versions_ = 0;

@@ -78,6 +78,25 @@ struct Segment_certificate_key {
   friend auto operator<=>(const Segment_certificate_key&, const Segment_certificate_key&) = default;
 };
 
+// A hash of keys, for the tables of certificates a kinetic run looks up
+// for every sign it decides.
+struct Segment_certificate_key_hash {
+  std::size_t operator()(const Segment_certificate_key& k) const noexcept {
+    const auto mix = [](std::uint64_t h, std::uint64_t x) {  // splitmix64's finaliser on h ^ x
+      h ^= x + 0x9e3779b97f4a7c15ULL;
+      h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+      return h ^ (h >> 31);
+    };
+    const auto point = [](const Site_point& p) {
+      return (std::uint64_t(p.a) << 32 | p.b) ^ (std::uint64_t(p.kind) << 63);
+    };
+    std::uint64_t h = mix(std::uint64_t(k.kind), point(k.p));
+    h = mix(h, point(k.q));
+    return static_cast<std::size_t>(mix(h, std::uint64_t(k.i) << 32 | k.j));
+  }
+};
+
 // The segments a certificate names (its points' segments, and i and j), with
 // repeats; at most five.
 std::vector<std::size_t> named_segments(const Segment_certificate_key& k);
