@@ -38,6 +38,14 @@ std::string difference(const Listed& a, const Listed& b) {
   return out.str();
 }
 
+// The cells of a tree's nodes, in pre-order (tree() numbers nodes so):
+// text() does not show them, and a subtree taken whole keeps its own.
+std::vector<Cell> cells(const Cylindrical_bsp& t) {
+  std::vector<Cell> out;
+  for (const Bsp_node& n : t.nodes) out.push_back(n.cell);
+  return out;
+}
+
 struct Tally {
   std::size_t batches = 0, frontier = 0, subtree = 0, made_local = 0, made_subtree = 0;
 };
@@ -57,6 +65,7 @@ void side_by_side(const Segment_scene& s, std::size_t limit, std::size_t fresh_e
     CHECK(a.failing == b.failing);
     CHECK(a.changed == b.changed);
     CHECK(local.tree().text() == subtree.tree().text());
+    CHECK(cells(local.tree()) == cells(subtree.tree()));
     const std::string against_subtree = difference(local.certificate_list(), subtree.certificate_list());
     CHECK(against_subtree == "");
     if (n % fresh_every == 0) {
@@ -65,6 +74,7 @@ void side_by_side(const Segment_scene& s, std::size_t limit, std::size_t fresh_e
       CHECK(against_fresh == "");
       // The logs too, which the frontier replay reads above the frontier.
       CHECK(local.arrivals() == fresh.arrivals());
+      CHECK(cells(local.tree()) == cells(fresh.tree()));
       CHECK(subtree.arrivals() == fresh.arrivals());
     }
     ++tally.batches;

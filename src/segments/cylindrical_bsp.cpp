@@ -75,8 +75,10 @@ void Bsp_builder<K>::steps(std::size_t v, const std::vector<Arrival>& arrivals) 
         std::vector<Arrival> kept;
         for (std::size_t l = k + 1; l < arrivals.size(); ++l) {
           const Arrival& c = arrivals[l];
-          if (c.kind == Arrival::Kind::intersection && c.segment == a.segment && (c.a == a.a || c.a == a.b))
-            kept.push_back(c);
+          if (c.kind != Arrival::Kind::intersection || c.segment != a.segment) continue;
+          // Found above v (at an end of v's part); or, while rerouting, to
+          // be found below the frontier, where the walk does not go.
+          if (c.a == a.a || c.a == a.b || (collect_ && p_.scene().rank[other_segment(c)] >= frontier_)) kept.push_back(c);
         }
         insert_crossings(v, a.segment, a.a, a.b, kept);
         break;
@@ -222,8 +224,15 @@ void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
 }
 
 bool located_before(const Arrival& x, const Arrival& y, const std::vector<std::size_t>& rank) {
-  const auto other = [&](const Arrival& c) { return c.a.a == c.segment ? c.a.b : c.a.a; };
-  return rank[other(x)] != rank[other(y)] ? rank[other(x)] < rank[other(y)] : x.dir > y.dir;
+  const std::size_t rx = rank[other_segment(x)], ry = rank[other_segment(y)];
+  return rx != ry ? rx < ry : x.dir > y.dir;
+}
+
+std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
+                                               std::size_t r) {
+  const auto from = std::partition_point(log.begin(), log.end(), [&](const Arrival& a) { return rank[a.segment] < r; });
+  const auto to = std::partition_point(from, log.end(), [&](const Arrival& a) { return rank[a.segment] == r; });
+  return {static_cast<std::size_t>(from - log.begin()), static_cast<std::size_t>(to - log.begin())};
 }
 
 void log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank) {

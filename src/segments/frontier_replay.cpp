@@ -19,14 +19,6 @@ namespace {
 
 using Key = Segment_certificate_key;
 
-// The arrivals of the segment of rank r in a log (a range: a log is in rank order).
-std::pair<std::size_t, std::size_t> block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
-                                          std::size_t r) {
-  const auto from = std::partition_point(log.begin(), log.end(), [&](const Arrival& a) { return rank[a.segment] < r; });
-  const auto to = std::partition_point(from, log.end(), [&](const Arrival& a) { return rank[a.segment] == r; });
-  return {static_cast<std::size_t>(from - log.begin()), static_cast<std::size_t>(to - log.begin())};
-}
-
 // The keys the arrivals decide at the node, sorted, each once.
 std::vector<Key> keys_of(const Bsp_node& node, const std::vector<Arrival>& arrivals) {
   std::vector<Key> keys;
@@ -41,7 +33,7 @@ bool has(const std::vector<Key>& sorted, const Key& k) { return std::binary_sear
 }  // namespace
 
 template <class K>
-std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(std::size_t u,
+std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic_segment_bsp<K>::frontier_replay(std::size_t u,
                                                                                 const std::vector<Failing>& failing,
                                                                                 const std::vector<std::int32_t>& nodes) {
   const auto& rank = scene_.rank;
@@ -101,7 +93,7 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
   std::map<std::size_t, std::vector<Arrival>> before, after;
   const auto mine = [&](std::size_t n) {
     const auto& log = log_.at[n];
-    const auto [from, to] = block(log, rank, r);
+    const auto [from, to] = rank_block(log, rank, r);
     return std::vector<Arrival>(log.begin() + static_cast<std::ptrdiff_t>(from), log.begin() + static_cast<std::ptrdiff_t>(to));
   };
   std::vector<std::size_t> stack;
@@ -127,7 +119,7 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
   for (const auto& [n, steps] : after) reached.insert(n);
   for (const std::size_t n : reached) {
     auto& log = log_.at[n];
-    const auto [from, to] = block(log, rank, r);
+    const auto [from, to] = rank_block(log, rank, r);
     const std::vector<Arrival>&now = after[n], &was_here = before[n];
     log.erase(log.begin() + static_cast<std::ptrdiff_t>(from), log.begin() + static_cast<std::ptrdiff_t>(to));
     log.insert(log.begin() + static_cast<std::ptrdiff_t>(from), now.begin(), now.end());
@@ -146,11 +138,13 @@ std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(
       if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
     }
   }
-  return std::vector<std::size_t>(replayed.begin(), replayed.end());
+  std::vector<Replay_root> roots;
+  for (const std::size_t n : replayed) roots.push_back({n, r});
+  return roots;
 }
 
-#define KVD_INSTANTIATE_FRONTIER_REPLAY(K)                                                                     \
-  template std::optional<std::vector<std::size_t>> Kinetic_segment_bsp<K>::frontier_replay(                   \
+#define KVD_INSTANTIATE_FRONTIER_REPLAY(K)                                                               \
+  template std::optional<std::vector<Kinetic_segment_bsp<K>::Replay_root>> Kinetic_segment_bsp<K>::frontier_replay( \
       std::size_t, const std::vector<Kinetic_segment_bsp<K>::Failing>&, const std::vector<std::int32_t>&);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_FRONTIER_REPLAY)
 

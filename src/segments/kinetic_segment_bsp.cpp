@@ -207,27 +207,39 @@ std::vector<Site_point> Kinetic_segment_bsp<K>::crossings_below(std::size_t v) c
 }
 
 template <class K>
-bool Kinetic_segment_bsp<K>::replay(const std::vector<std::size_t>& roots, std::size_t& added) {
+bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const std::vector<std::int32_t>& failing,
+                                    std::size_t& added) {
+  // A subtree holding a failing node changes: it is not taken whole.
+  std::set<std::size_t> dirty;
+  for (const std::int32_t f : failing)
+    for (std::int32_t a = f; a >= 0 && dirty.insert(static_cast<std::size_t>(a)).second;)
+      a = tree_.nodes[static_cast<std::size_t>(a)].parent;
   std::vector<std::string> before;
   std::vector<std::vector<Arrival>> arrivals;
+  std::vector<std::vector<std::size_t>> spare;
   std::vector<Site_point> was, is;
-  for (const std::size_t v : roots) {
+  for (const auto& [v, rank] : roots) {
     before.push_back(tree_.text(v));
     arrivals.push_back(log_.at[v]);
     const std::vector<Site_point> x = crossings_below(v);
     was.insert(was.end(), x.begin(), x.end());
-    for (const std::size_t n : tree_.preorder(v)) {
-      forget(n);
-      if (n != v) log_.free.push_back(n);
+    if (rank) spare.push_back(set_aside(v, *rank, dirty));
+    else {
+      spare.emplace_back();
+      discard(v, false);
     }
   }
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   bool changed = false;
+  std::vector<std::size_t> tops;  // nodes made above cells taken whole, whose logs may name a crossing gone
   for (std::size_t k = 0; k < roots.size(); ++k) {
-    builder.replay(roots[k], arrivals[k]);
-    const std::vector<Site_point> x = crossings_below(roots[k]);
+    const std::size_t v = roots[k].node;
+    if (roots[k].rank) remake_frontier_node(builder, v, *roots[k].rank, arrivals[k], spare[k], dirty, tops);
+    else builder.replay(v, arrivals[k]);
+    for (const std::size_t o : spare[k]) discard(o, true);
+    const std::vector<Site_point> x = crossings_below(v);
     is.insert(is.end(), x.begin(), x.end());
-    changed = changed || tree_.text(roots[k]) != before[k];
+    changed = changed || tree_.text(v) != before[k];
   }
   added += builder.added();
   // A crossing cut below a root before and nowhere now (both of a crossing's
@@ -244,9 +256,10 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<std::size_t>& roots, std::
     if (it == by_crossing_.end()) continue;
     for (const auto& [key, node] : std::vector(it->second)) drop(key, node);
   }
-  // And its location, logged above the roots, too (each ancestor once).
-  std::set<std::size_t> above;
-  for (const std::size_t v : roots) {
+  // And its location, logged above the roots, too (each ancestor once),
+  // and above the cells taken whole.
+  std::set<std::size_t> above(tops.begin(), tops.end());
+  for (const auto& [v, rank] : roots) {
     if (gone.empty()) break;
     std::int32_t a = tree_.nodes[v].parent;
     while (a >= 0 && above.insert(static_cast<std::size_t>(a)).second) a = tree_.nodes[static_cast<std::size_t>(a)].parent;
@@ -366,7 +379,7 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   nodes.erase(std::remove(nodes.begin(), nodes.end(), -1), nodes.end());
-  std::vector<std::size_t> roots;
+  std::vector<Replay_root> roots;
   for (const std::int32_t n : nodes) {
     bool below = false;
     for (std::int32_t a = tree_.nodes[static_cast<std::size_t>(n)].parent; a >= 0 && !below;
@@ -374,13 +387,13 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
       below = std::binary_search(nodes.begin(), nodes.end(), a);
     if (below) continue;
     const auto u = static_cast<std::size_t>(n);
-    std::optional<std::vector<std::size_t>> frontier;
+    std::optional<std::vector<Replay_root>> frontier;
     if (update_ == Segment_update::local) frontier = frontier_replay(u, failing, nodes);
     ++(frontier ? b.frontier_replays : b.subtree_replays);
     if (frontier) roots.insert(roots.end(), frontier->begin(), frontier->end());
-    else roots.push_back(u);
+    else roots.push_back({u, std::nullopt});
   }
-  const bool changed = replay(roots, b.nodes_rebuilt);
+  const bool changed = replay(roots, nodes, b.nodes_rebuilt);
   // The signs decided at no node, gone with the failure, decided again.
   pred_.at_node(-1);
   for (const auto& [key, at] : failing)

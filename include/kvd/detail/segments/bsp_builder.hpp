@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "kvd/segments/cylindrical_bsp.hpp"
@@ -42,6 +43,13 @@ struct Build_log {
 // (`rank`: Segment_scene::rank); a leaf's is past every segment. It does not
 // decrease down any path: each insertion splits leaves of the tree before it.
 std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank);
+
+// The arrivals of the segment of rank r in a log (a range: a log is in rank order).
+std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
+                                               std::size_t r);
+
+// The segment an intersection arrival's segment crosses there.
+inline std::uint32_t other_segment(const Arrival& c) { return c.a.a == c.segment ? c.a.b : c.a.a; }
 
 // Whether intersection arrival x of a segment comes before y of the same
 // segment in build order: by the other segment's priority, above first.
@@ -84,7 +92,9 @@ public:
   // that they reach, frontier nodes included, in build order, as replay
   // would log them (crossings found again, and located from u after their
   // signs above u are decided; a crossing found anew is logged at u and
-  // above). proofs/segment-local-update.md, "Frontier replay".
+  // above). A logged crossing with a segment of rank `rank` or later, which
+  // the walks do not find above the frontier, is located as logged.
+  // proofs/segment-local-update.md, "Frontier replay".
   void reroute(std::size_t u, const std::vector<Arrival>& arrivals, std::size_t rank,
                std::map<std::size_t, std::vector<Arrival>>& at);
   // The nodes added since the builder was made.
