@@ -106,16 +106,20 @@ std::size_t Bsp_builder<K>::add_leaf(const Cell& c, std::size_t parent) {
   leaf.cell = c;
   leaf.parent = static_cast<std::int32_t>(parent);
   ++added_;
-  if (log_ && !log_->free.empty()) {
-    const std::size_t n = log_->free.back();
-    log_->free.pop_back();
-    b_.nodes[n] = leaf;
-    log_->at[n].clear();
+  return place_node(b_, log_, leaf);
+}
+
+std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& node) {
+  if (log && !log->free.empty()) {
+    const std::size_t n = log->free.back();
+    log->free.pop_back();
+    bsp.nodes[n] = node;
+    log->at[n].clear();
     return n;
   }
-  b_.nodes.push_back(leaf);
-  if (log_) log_->at.emplace_back();
-  return b_.nodes.size() - 1;
+  bsp.nodes.push_back(node);
+  if (log) log->at.emplace_back();
+  return bsp.nodes.size() - 1;
 }
 
 template <class K>

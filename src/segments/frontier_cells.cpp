@@ -30,16 +30,9 @@ std::vector<std::size_t> Kinetic_segment_bsp<K>::set_aside(std::size_t v, std::s
   }
   if (!spare.empty() && spare.front() == v) {
     // v keeps its slot for the segment's cuts: what it held moves aside.
-    std::size_t m = tree_.nodes.size();
-    if (!log_.free.empty()) {
-      m = log_.free.back();
-      log_.free.pop_back();
-    } else {
-      tree_.nodes.emplace_back();
-      log_.at.emplace_back();
-    }
-    tree_.nodes[m] = Bsp_node{};
-    tree_.nodes[m].cell = tree_.nodes[v].cell;
+    Bsp_node aside;
+    aside.cell = tree_.nodes[v].cell;
+    const std::size_t m = place_node(tree_, &log_, aside);
     move_node(v, m);
     if (dirty.count(v)) dirty.insert(m);
     // The segment had no step at v (it would have cut v): its new ones go.
@@ -150,14 +143,14 @@ void Kinetic_segment_bsp<K>::move_node(std::size_t from, std::size_t to) {
   if (from < node_keys_.size()) {
     if (node_keys_.size() <= to) node_keys_.resize(to + 1);
     const auto was = static_cast<std::int32_t>(from), is = static_cast<std::int32_t>(to);
-    // (A node's list may name a key dropped since through by_crossing_.)
+    // A node's list may name a key dropped since through by_crossing_: it
+    // is in force no more, or no more at `from`, and nothing names it there.
     for (const Segment_certificate_key& key : node_keys_[from]) {
-      for (auto* m : {&certs_, &limbo_})
-        if (const auto it = m->find(key); it != m->end())
-          std::replace(it->second.nodes.begin(), it->second.nodes.end(), was, is);
+      if (const auto it = certs_.find(key); it != certs_.end())
+        std::replace(it->second.nodes.begin(), it->second.nodes.end(), was, is);
       for (const Site_point& x : {key.p, key.q})
-        if (x.kind == Site_point::Kind::crossing)
-          std::replace(by_crossing_[x].begin(), by_crossing_[x].end(), std::pair{key, was}, std::pair{key, is});
+        if (const auto at = by_crossing_.find(x); at != by_crossing_.end())
+          std::replace(at->second.begin(), at->second.end(), std::pair{key, was}, std::pair{key, is});
     }
     node_keys_[to] = std::move(node_keys_[from]);
     node_keys_[from].clear();

@@ -44,6 +44,10 @@ struct Build_log {
 // decrease down any path: each insertion splits leaves of the tree before it.
 std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank);
 
+// Puts `node` in a free slot of the tree (one of the log's, when it has
+// one; the slot's log emptied), or in a new one; returns the slot.
+std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& node);
+
 // The arrivals of the segment of rank r in a log (a range: a log is in rank order).
 std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
                                                std::size_t r);
