@@ -78,21 +78,9 @@ bool names_object(const scene::Scene& s, const Certificate_key& k, std::size_t o
 }
 
 std::size_t Certificate_key_hash::operator()(const Certificate_key& k) const noexcept {
-  std::size_t h = static_cast<std::size_t>(k.type);
-  const auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
-  const auto vertex = [&](const symbolic::Symbolic_vertex& v) {
-    mix(static_cast<std::size_t>(v.kind));
-    for (std::size_t id : v.ids) mix(id);
-  };
-  vertex(k.vertex);
-  mix(k.against.index());
-  if (const auto* p = std::get_if<symbolic::Symbolic_plane>(&k.against)) {
-    mix(static_cast<std::size_t>(p->kind));
-    mix(p->id);
-  } else {
-    vertex(std::get<symbolic::Symbolic_vertex>(k.against));
-  }
-  return h;
+  const symbolic::Symbolic_hash h;
+  const std::size_t against = std::visit([&](const auto& a) { return h(a); }, k.against);
+  return h.mix(h.mix(h.mix(static_cast<std::size_t>(k.type), h(k.vertex)), k.against.index()), against);
 }
 
 namespace {

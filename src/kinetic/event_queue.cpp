@@ -1,5 +1,7 @@
 #include "kvd/detail/kinetic/event_queue.hpp"
 
+#include <array>
+
 #include <boost/heap/pairing_heap.hpp>
 
 #include "kvd/detail/kernel/instantiate.hpp"
@@ -113,24 +115,26 @@ private:
     for (; n >= 0 && !slot(n).dirty; n = slot(n).parent) slot(n).dirty = true;
   }
 
-  // Merges (time, id) into e: a strictly earlier time replaces, an equal one joins.
-  void offer(Earliest& e, const Time& t, const std::vector<std::size_t>& ids) const {
-    const int cmp = e.time ? k_->compare(t, *e.time) : -1;
-    if (cmp < 0) e.time = t, e.ids = ids;
-    else if (cmp == 0) e.ids.insert(e.ids.end(), ids.begin(), ids.end());
-  }
-
+  // The least failure time in the subtree and every id failing then; each
+  // candidate is compared once, and only the least time is copied.
   const Earliest& earliest(int n) const {
     const Slot& s = slot(n);
     if (!s.dirty) return s.earliest;
-    Earliest e;
-    for (const auto& [id, t] : s.own) offer(e, t, {id});
+    const Time* least = nullptr;  // into s.own or a child's earliest, both left alone below
+    std::vector<std::size_t> ids;
+    const auto offer = [&](const Time& t, const auto& more) {
+      const int cmp = least ? k_->compare(t, *least) : -1;
+      if (cmp < 0) least = &t, ids.assign(more.begin(), more.end());
+      else if (cmp == 0) ids.insert(ids.end(), more.begin(), more.end());
+    };
+    for (const auto& [id, t] : s.own) offer(t, std::array{id});
     for (int c : {s.left, s.right}) {
       if (c < 0) continue;
       const Earliest& sub = earliest(c);
-      if (sub.time) offer(e, *sub.time, sub.ids);
+      if (sub.time) offer(*sub.time, sub.ids);
     }
-    s.earliest = std::move(e);
+    s.earliest.time = least ? std::optional<Time>(*least) : std::nullopt;
+    s.earliest.ids = std::move(ids);
     s.dirty = false;
     return s.earliest;
   }

@@ -116,7 +116,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   }
   // The holders of the keys that records not kept in place lose (with
   // each touched key's holder before).
-  std::map<Certificate_key, int> before;
+  std::unordered_map<Certificate_key, int, Certificate_key_hash> before;
   const auto touch = [&](const Certificate_key& key) {
     auto& h = holders_[key];
     before.try_emplace(key, h.empty() ? -1 : h.front());
@@ -169,9 +169,11 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   }
   records_.resize(t.nodes.size());
   remake_ = false;
-  // 4. What changed in force: a key whose holder is new or rewritten.
+  // 4. What changed in force: a key whose holder is new or rewritten; by key.
+  std::vector<std::pair<Certificate_key, int>> touched(before.begin(), before.end());
+  std::ranges::sort(touched);
   Changes out;
-  for (const auto& [key, old] : before) {
+  for (const auto& [key, old] : touched) {
     const auto it = holders_.find(key);
     if (it->second.empty()) {
       if (old >= 0) out.gone.push_back(key);

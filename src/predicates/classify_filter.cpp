@@ -41,14 +41,6 @@ std::optional<Point4<Interval>> at(const Motion& m, const Interval& t) {
 
 }  // namespace
 
-struct Vertex_hash {
-  std::size_t operator()(const symbolic::Symbolic_vertex& v) const {
-    std::size_t h = static_cast<std::size_t>(v.kind);
-    for (std::size_t id : v.ids) h = h * 0x9e3779b97f4a7c15ull + id;
-    return h;
-  }
-};
-
 struct Classification_filter::State {
   const scene::Scene* scene;
   std::vector<Motion> vertices;
@@ -66,7 +58,7 @@ struct Classification_filter::State {
   // costs nothing in the number of planes.
   std::uint64_t epoch = 1;
   std::array<std::vector<std::pair<std::uint64_t, Plane4<Interval>>>, 3> planes;  // by Symbolic_plane::Kind
-  std::unordered_map<symbolic::Symbolic_vertex, Point4<Interval>, Vertex_hash> points;
+  std::unordered_map<symbolic::Symbolic_vertex, Point4<Interval>, symbolic::Symbolic_hash> points;
 
   std::optional<Interval> enclose(const Exact_time& t) {
     if (!t.is_rational()) return filter::enclose(t);

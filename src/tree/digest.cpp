@@ -88,9 +88,21 @@ std::string sha256_hex_portable(const std::string& bytes) {
 
 std::string sha256_hex(const std::string& bytes) {
 #ifdef KVD_HAVE_OPENSSL
+  // One context and one fetched algorithm per thread: a batch hashes every
+  // node on its changed paths, and EVP_Digest makes and fetches both each time.
+  struct Context {
+    EVP_MD_CTX* ctx = EVP_MD_CTX_new();
+    EVP_MD* md = EVP_MD_fetch(nullptr, "SHA256", nullptr);
+    ~Context() {
+      EVP_MD_free(md);
+      EVP_MD_CTX_free(ctx);
+    }
+  };
+  thread_local const Context c;
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
-  if (EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr) != 1)
+  if (!c.ctx || !c.md || EVP_DigestInit_ex(c.ctx, c.md, nullptr) != 1 ||
+      EVP_DigestUpdate(c.ctx, bytes.data(), bytes.size()) != 1 || EVP_DigestFinal_ex(c.ctx, digest, &length) != 1)
     throw std::runtime_error("SHA-256 failed");
   return hex(digest, length);
 #else

@@ -14,9 +14,9 @@
 //     proofs/classification.md for when that can happen.
 #pragma once
 
-#include <map>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -107,11 +107,12 @@ private:
 
   const K* k_;
   symbolic::Scene_geometry<typename K::Poly> motion_;
-  mutable std::map<symbolic::Symbolic_plane, Plane4<typename K::Poly>> planes_;
-  mutable std::map<symbolic::Symbolic_vertex, Point4<typename K::Poly>> points_;
-  mutable std::map<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>, Deciding> deciding_;
-  mutable std::map<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>, std::vector<typename K::Poly>>
-      certificates_;
+  // Caches, looked up only (node-based: the references handed out stay valid).
+  using Pair = std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>;
+  mutable std::unordered_map<symbolic::Symbolic_plane, Plane4<typename K::Poly>, symbolic::Symbolic_hash> planes_;
+  mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> points_;
+  mutable std::unordered_map<Pair, Deciding, symbolic::Symbolic_hash> deciding_;
+  mutable std::unordered_map<Pair, std::vector<typename K::Poly>, symbolic::Symbolic_hash> certificates_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
   // Rule 2 on intervals first: the exact kernel with its filter on only.

@@ -7,6 +7,7 @@
 #include <compare>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kvd::symbolic {
@@ -76,6 +77,21 @@ struct Triangle_fragment {
   std::vector<Symbolic_vertex> corners;
   std::vector<Symbolic_edge> sides;  // sides[i] runs from corners[i] to corners[i+1]
   auto operator<=>(const Triangle_fragment&) const = default;
+};
+
+// Hashes, for the caches and indexes that look these up by name.
+struct Symbolic_hash {
+  static std::size_t mix(std::size_t h, std::size_t v) { return h * 0x9e3779b97f4a7c15ull + v; }
+  std::size_t operator()(const Symbolic_plane& p) const { return mix(static_cast<std::size_t>(p.kind), p.id); }
+  std::size_t operator()(const Symbolic_vertex& v) const {
+    std::size_t h = static_cast<std::size_t>(v.kind);
+    for (std::size_t id : v.ids) h = mix(h, id);
+    return h;
+  }
+  template <class A, class B>
+  std::size_t operator()(const std::pair<A, B>& ab) const {
+    return mix((*this)(ab.first), (*this)(ab.second));
+  }
 };
 
 // Readable names for traces and test messages: "P(3)", "SV-thread(e4,P2)".

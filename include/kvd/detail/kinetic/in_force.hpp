@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <map>
 #include <optional>
 #include <set>
+#include <unordered_map>
 #include <vector>
 
 #include "kvd/kinetic/certificate.hpp"
@@ -34,7 +34,7 @@ public:
     std::set<Certificate_key> offered;
     for (const Offer& o : offers) offered.insert(o.certificate->key);
     std::vector<Certificate_key> gone;
-    for (const auto& [key, id] : ids_)
+    for (const Certificate_key& key : keys())
       if (!offered.contains(key)) gone.push_back(key);
     apply(gone, offers, queue, fails);
   }
@@ -84,7 +84,7 @@ public:
   // By key.
   template <class F>
   void for_each(F f) const {
-    for (const auto& [key, id] : ids_) f(*entries_[id].certificate);
+    for (const Certificate_key& key : keys()) f(*entries_[ids_.at(key)].certificate);
   }
 
 private:
@@ -92,6 +92,16 @@ private:
     std::optional<Certificate<Poly>> certificate;
     std::optional<Time> fails;
   };
+
+  // The keys in force, in order: what is read whole goes by key, so that
+  // nothing depends on the hash table's order.
+  std::vector<Certificate_key> keys() const {
+    std::vector<Certificate_key> out;
+    out.reserve(ids_.size());
+    for (const auto& entry : ids_) out.push_back(entry.first);
+    std::ranges::sort(out);
+    return out;
+  }
 
   std::size_t allocate() {
     if (free_.empty()) {
@@ -108,7 +118,7 @@ private:
                               [](const Poly& p, const Poly& q) { return p.coefficients() == q.coefficients(); });
   }
 
-  std::map<Certificate_key, std::size_t> ids_;
+  std::unordered_map<Certificate_key, std::size_t, Certificate_key_hash> ids_;
   std::vector<Entry> entries_;  // by id; empty when free
   std::vector<std::size_t> free_;
 };
