@@ -108,6 +108,10 @@ void Kinetic_segment_bsp<K>::fit(Bsp_builder<K>& builder, std::size_t cell, cons
   if (first != steps.end()) {
     const std::size_t r = scene_.rank[first->segment];
     const auto [from, to] = rank_block(steps, scene_.rank, r);
+    // A crossing walk that reaches a cell is followed there by its segment's
+    // intersection or edge arrivals, in its block: no earlier block can hold
+    // only walks. Anything else is a log out of step with the tree.
+    if (from != 0) throw Bsp_contradiction("cylindrical BSP: a cell's arrivals precede the block of its first cut");
     builder.replay(cell, std::vector<Arrival>(steps.begin() + static_cast<std::ptrdiff_t>(from),
                                               steps.begin() + static_cast<std::ptrdiff_t>(to)));
     const Bsp_node& made = tree_.nodes[cell];
