@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace kvd::symbolic {
@@ -83,10 +84,23 @@ struct Triangle_fragment {
 struct Symbolic_hash {
   static std::size_t mix(std::size_t h, std::size_t v) { return h * 0x9e3779b97f4a7c15ull + v; }
   std::size_t operator()(const Symbolic_plane& p) const { return mix(static_cast<std::size_t>(p.kind), p.id); }
+  std::size_t operator()(const Symbolic_edge& e) const { return mix(mix(static_cast<std::size_t>(e.kind), e.a), e.b); }
   std::size_t operator()(const Symbolic_vertex& v) const {
     std::size_t h = static_cast<std::size_t>(v.kind);
     for (std::size_t id : v.ids) h = mix(h, id);
     return h;
+  }
+  std::size_t operator()(const Edge_fragment& f) const { return mix(mix((*this)(f.a), (*this)(f.b)), (*this)(f.edge)); }
+  std::size_t operator()(const Triangle_fragment& f) const { return mix((*this)(f.corners), (*this)(f.sides)); }
+  template <class T>
+  std::size_t operator()(const std::vector<T>& v) const {
+    std::size_t h = v.size();
+    for (const T& x : v) h = mix(h, (*this)(x));
+    return h;
+  }
+  template <class... T>
+  std::size_t operator()(const std::variant<T...>& v) const {
+    return mix(v.index(), std::visit([this](const auto& x) { return (*this)(x); }, v));
   }
   template <class A, class B>
   std::size_t operator()(const std::pair<A, B>& ab) const {

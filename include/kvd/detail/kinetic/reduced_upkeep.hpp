@@ -19,7 +19,6 @@
 #pragma once
 
 #include <cstddef>
-#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -108,6 +107,15 @@ private:
     tree::Fragment fragment;
     auto operator<=>(const Key&) const = default;
   };
+  struct Hash {
+    symbolic::Symbolic_hash h;
+    std::size_t operator()(const Key& k) const {
+      return h.mix(h.mix(static_cast<std::size_t>(k.path), h(k.cut)), h(k.fragment));
+    }
+    std::size_t operator()(const Path& p) const {
+      return h.mix(h.mix(static_cast<std::size_t>(std::get<0>(p)), h(std::get<1>(p))), h(std::get<2>(p)));
+    }
+  };
   // What a node slot of the tree held at the last update. A node whose slot
   // holds its key is matched in place (the local update keeps the slots of
   // the nodes it does not touch); others are looked up by key (`where_`).
@@ -121,10 +129,10 @@ private:
     std::vector<Certificate<Poly>> certificates;
   };
   std::vector<Record> records_;
-  std::map<Key, int> where_;  // the slot holding each key
+  std::unordered_map<Key, int, Hash> where_;  // the slot holding each key
   // The slots holding each key, increasing (one but in degenerate cases).
   std::unordered_map<Certificate_key, std::vector<int>, Certificate_key_hash> holders_;
-  std::map<Path, int> paths_;  // every path met since the last clear()
+  std::unordered_map<Path, int, Hash> paths_;  // every path met since the last clear()
   int next_path_ = 0;
   bool remake_ = false;
   // One update's marks per slot: holding a failed certificate, on a path
