@@ -6,6 +6,7 @@
 // against a run making them all after every batch.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <random>
@@ -15,6 +16,7 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/detail/kinetic/event_queue.hpp"
+#include "kvd/detail/kinetic/in_force.hpp"
 #include "kvd/detail/kinetic/reduced_upkeep.hpp"
 #include "kvd/detail/tree/journal.hpp"
 #include "kvd/detail/kinetic/local_update.hpp"
@@ -369,4 +371,62 @@ TEST_CASE("keeping certificates over batches sees the structural changes of maki
                 << all_made << " all");
   CHECK(compared >= 100);
   CHECK(2 * kept_made < all_made);
+}
+
+// The certificates in force are held in a hash table: what is read whole
+// (traces, certificate files, the observer) must come in key order, and
+// the queue must end the same, whatever order they were offered in.
+TEST_CASE("the certificates in force are read in key order whatever order they came in", "[upkeep][queue]") {
+  const Exact_kernel k;
+  const scene::Scene s = load("uniform-density-25.json");
+  const predicates::Classifier<Exact_kernel> c(k, s);
+  const tree::Kvd_tree t = tree::build(c, Exact_time(mpq_class(0)));
+  const auto certs = kinetic::reduced_certificates(c, t, Exact_time(mpq_class(0)));
+  REQUIRE(certs.size() > 100);
+  using Offer = kinetic::In_force<Exact_kernel>::Offer;
+  // A failure time of each certificate's own, many of them equal.
+  const auto fails = [&](const kinetic::Certificate<Exact_kernel::Poly>& cert) -> std::optional<Exact_time> {
+    return Exact_time(mpq_class(static_cast<long>(kinetic::Certificate_key_hash{}(cert.key) % 13), 5));
+  };
+  const auto read = [](const kinetic::In_force<Exact_kernel>& f) {
+    std::vector<kinetic::Certificate_key> out;
+    f.for_each([&](const auto& cert) { out.push_back(cert.key); });
+    return out;
+  };
+  std::vector<Offer> forward;
+  for (const auto& cert : certs) forward.push_back({&cert, true});
+  std::vector<Offer> shuffled = forward;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(3));
+  std::vector<kinetic::Certificate_key> keys;
+  for (const auto& cert : certs) keys.push_back(cert.key);
+  std::ranges::sort(keys);
+  kinetic::In_force<Exact_kernel> a, b;
+  auto qa = kinetic::make_queue(k, kinetic::Queue_kind::tree), qb = kinetic::make_queue(k, kinetic::Queue_kind::tree);
+  qa->reset(t);
+  qb->reset(t);
+  a.apply({}, forward, *qa, fails);
+  b.apply({}, shuffled, *qb, fails);
+  CHECK(read(a) == keys);
+  CHECK(read(b) == keys);
+  // Every third key goes, offered in opposite orders; replace() keeps the rest.
+  std::vector<kinetic::Certificate_key> gone;
+  for (std::size_t i = 0; i < keys.size(); i += 3) gone.push_back(keys[i]);
+  std::vector<kinetic::Certificate_key> reversed(gone.rbegin(), gone.rend());
+  a.apply(gone, {}, *qa, fails);
+  b.apply(reversed, {}, *qb, fails);
+  std::vector<kinetic::Certificate_key> kept;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (i % 3 != 0) kept.push_back(keys[i]);
+  CHECK(read(a) == kept);
+  CHECK(read(b) == kept);
+  REQUIRE(qa->first_time());
+  CHECK(k.compare(*qa->first_time(), *qb->first_time()) == 0);
+  const auto sorted_keys = [&](const kinetic::In_force<Exact_kernel>& f, std::vector<std::size_t> ids) {
+    std::vector<kinetic::Certificate_key> out;
+    for (std::size_t id : ids) out.push_back(f[id].key);
+    std::ranges::sort(out);
+    return out;
+  };
+  CHECK(sorted_keys(a, qa->first()) == sorted_keys(b, qb->first()));
+  CHECK(a.size() == kept.size());
 }
