@@ -139,7 +139,7 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
          "the events over a span by O(mn²) vertex, O(mnλ(n)) edge, O(mn) intersection and O(m) flip events: the "
          "rate columns are the failures of a kind per unit of time, over m·n (flips: over m), so the intersection "
          "and flip rates must stay bounded as n grows and the vertex and edge rates may grow at most about "
-         "linearly. *Update*: the tree and its certificates made just after a batch, ms per batch; subtree / local "
+         "linearly. *Update*: the tree and its certificates made just after a batch, and the queue up to its next minimum, ms per batch; subtree / local "
          "and rebuild / local of the means; *nodes made again*: median per batch, local / subtree; *frontier*: "
          "the share of the failures' topmost nodes the local update handled by the frontier replay. *Same*: the "
          "updates had the same batches (times and failing certificates) and end in the same tree. The subtree update "

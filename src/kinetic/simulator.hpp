@@ -58,6 +58,7 @@ public:
     if (!first.tree) throw tree::Build_error(first.meeting.error);
     take(std::move(first));
     make_certificates();
+    queue_->first_time();  // the whole tournament, part of the construction
     sim_.construction_seconds = watch.seconds();
     in_force_.for_each([&](const auto& cert) { ++sim_.initial_certificates[static_cast<std::size_t>(cert.key.type)]; });
   }
@@ -230,6 +231,9 @@ private:
         adopt(std::move(later->second), std::move(later->first));
       }
     }
+    // The next queue minimum: the tournament repairs its changed paths now,
+    // inside the batch's time (the next step reads the cached result).
+    queue_->first_time();
     batch.certificate_seconds = cert_watch.seconds();
     batch.structure = hashes_.root();
     sim_.batches.push_back(std::move(batch));

@@ -309,6 +309,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   // The failing certificates go first: those decided again get a new failure time.
   for (const auto& key : b.failing) certs_.erase(key);
   b.changed = guarded([&] { b.changed = update(failing, b); }) || b.changed;
+  next_event_time();  // up to the next queue minimum: stale entries off the heap
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certs_.size();
   return b;
