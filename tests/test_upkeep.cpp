@@ -408,7 +408,7 @@ TEST_CASE("the certificates in force are read in key order whatever order they c
   b.apply({}, shuffled, *qb, fails);
   CHECK(read(a) == keys);
   CHECK(read(b) == keys);
-  // Every third key goes, offered in opposite orders; replace() keeps the rest.
+  // Every third key goes, taken out in opposite orders; the rest stay.
   std::vector<kinetic::Certificate_key> gone;
   for (std::size_t i = 0; i < keys.size(); i += 3) gone.push_back(keys[i]);
   std::vector<kinetic::Certificate_key> reversed(gone.rbegin(), gone.rend());

@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "kvd/kinetic/certificate.hpp"
@@ -34,8 +35,8 @@ public:
     std::set<Certificate_key> offered;
     for (const Offer& o : offers) offered.insert(o.certificate->key);
     std::vector<Certificate_key> gone;
-    for (const Certificate_key& key : keys())
-      if (!offered.contains(key)) gone.push_back(key);
+    for (const auto* entry : by_key())
+      if (!offered.contains(entry->first)) gone.push_back(entry->first);
     apply(gone, offers, queue, fails);
   }
 
@@ -84,7 +85,7 @@ public:
   // By key.
   template <class F>
   void for_each(F f) const {
-    for (const Certificate_key& key : keys()) f(*entries_[ids_.at(key)].certificate);
+    for (const auto* entry : by_key()) f(*entries_[entry->second].certificate);
   }
 
 private:
@@ -93,13 +94,13 @@ private:
     std::optional<Time> fails;
   };
 
-  // The keys in force, in order: what is read whole goes by key, so that
-  // nothing depends on the hash table's order.
-  std::vector<Certificate_key> keys() const {
-    std::vector<Certificate_key> out;
+  // The entries in force, by key: what is read whole goes in key order, so
+  // that nothing depends on the hash table's order.
+  std::vector<const std::pair<const Certificate_key, std::size_t>*> by_key() const {
+    std::vector<const std::pair<const Certificate_key, std::size_t>*> out;
     out.reserve(ids_.size());
-    for (const auto& entry : ids_) out.push_back(entry.first);
-    std::ranges::sort(out);
+    for (const auto& entry : ids_) out.push_back(&entry);
+    std::ranges::sort(out, {}, [](const auto* entry) -> const Certificate_key& { return entry->first; });
     return out;
   }
 
