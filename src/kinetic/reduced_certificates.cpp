@@ -74,7 +74,7 @@ private:
   // A P-wall (along y) is a cut of the tree or an intersection cut through
   // an intersection point; E- and T-walls are neither.
   struct Wall {
-    const Plane4<P>* plane;  // the classifier's, or p_cuts_': they outlive the walk
+    const Plane4<P>* plane;  // the classifier's: it outlives the walk
     Spec spec;
     std::optional<SP> cut{};
     std::optional<SV> through{};
@@ -148,11 +148,8 @@ private:
   // classification of s against a triangle of e_j, which the perturbation
   // decides.
   void edge_edge(const SV& s) {
-    const auto& e = s_.edges[s.ids[0]];
-    const auto& ej = s_.edges[s.ids[1]];
-    const auto& m = c_.motion();
-    P d = coplanar(m.vertex(e[0]), m.vertex(e[1]), m.vertex(ej[0]), m.vertex(ej[1]));
-    if (d.is_zero()) d = c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()});
+    const P& lines = c_.edge_lines(s.ids[0], s.ids[1]);
+    const P d = lines.is_zero() ? c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()}) : lines;
     const SP against{SP::Kind::E, s.ids[1]};
     add({{Certificate_type::ET, s, against}, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, against}});
   }
@@ -167,12 +164,7 @@ private:
   }
 
   // The implicit P-cut through an intersection point: x ∨ z ∨ s, as SP(V).
-  const Plane4<P>& p_cut(const SV& s) {
-    auto it = p_cuts_.find(s);
-    if (it == p_cuts_.end())
-      it = p_cuts_.emplace(s, join(join(c_.motion().x(), c_.motion().z()), c_.position(s))).first;
-    return it->second;
-  }
+  const Plane4<P>& p_cut(const SV& s) const { return c_.p_plane_through(s); }
 
   // Where the walk along v + μ d leaves space (the walk's end), if anywhere:
   // at μ = ∞ when d is a direction, at μ = -v_W / d_W when d is a point; or
@@ -323,7 +315,6 @@ private:
   const Point4<P> y_;  // the direction along which P-cuts are stacked
   const std::vector<int>* path_ = nullptr;  // the ancestors of the node visited, root first
   int at_ = -1;                             // the node visited
-  std::map<SV, Plane4<P>> p_cuts_;
   std::map<Certificate_key, Certificate<P>> made_;
   std::unique_ptr<Wall_filter> filter_;  // the exact kernel's, when its filter is on
 };

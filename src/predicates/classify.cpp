@@ -46,13 +46,41 @@ const Point4<typename K::Poly>& Classifier<K>::point_poly(const symbolic::Symbol
 }
 
 template <class K>
+const typename K::Poly& Classifier<K>::edge_lines(std::size_t e1, std::size_t e2) const {
+  auto it = edge_lines_.find({e1, e2});
+  if (it == edge_lines_.end()) {
+    const auto& a = motion_.scene().edges[e1];
+    const auto& b = motion_.scene().edges[e2];
+    it = edge_lines_
+             .emplace(std::pair{e1, e2}, coplanar(motion_.vertex(a[0]), motion_.vertex(a[1]), motion_.vertex(b[0]),
+                                                  motion_.vertex(b[1])))
+             .first;
+  }
+  return it->second;
+}
+
+template <class K>
 const symbolic::Scene_geometry<Poly<typename K::Poly>>& Classifier<K>::perturbed() const {
   if (!perturbed_) perturbed_.emplace(symbolic::perturbed(motion_));
   return *perturbed_;
 }
 
 template <class K>
-Point4<typename K::Poly> Classifier<K>::position(const symbolic::Symbolic_vertex& given) const {
+const Point4<typename K::Poly>& Classifier<K>::position(const symbolic::Symbolic_vertex& v) const {
+  auto it = positions_.find(v);
+  if (it == positions_.end()) it = positions_.emplace(v, position_of(v)).first;
+  return it->second;
+}
+
+template <class K>
+const Plane4<typename K::Poly>& Classifier<K>::p_plane_through(const symbolic::Symbolic_vertex& v) const {
+  auto it = p_planes_.find(v);
+  if (it == p_planes_.end()) it = p_planes_.emplace(v, join(join(motion_.x(), motion_.z()), position(v))).first;
+  return it->second;
+}
+
+template <class K>
+Point4<typename K::Poly> Classifier<K>::position_of(const symbolic::Symbolic_vertex& given) const {
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
   Point4<typename K::Poly> x = point_poly(v);
   if (!(vanishes(x[0]) && vanishes(x[1]) && vanishes(x[2]) && vanishes(x[3]))) return x;

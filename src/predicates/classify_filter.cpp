@@ -39,16 +39,52 @@ std::optional<Point4<Interval>> at(const Motion& m, const Interval& t) {
   return p;
 }
 
+// Calls f with each scene vertex that the plane's or the point's
+// coordinates are made from (scene_geometry_impl.hpp), besides x and z.
+template <class F>
+void for_each_vertex(const scene::Scene& s, const symbolic::Symbolic_plane& p, F&& f) {
+  using P = symbolic::Symbolic_plane::Kind;
+  switch (p.kind) {
+    case P::P: f(p.id); break;
+    case P::E: f(s.edges[p.id][0]), f(s.edges[p.id][1]); break;
+    case P::T:
+      for (std::size_t v : s.triangles[p.id]) f(v);
+      break;
+  }
+}
+template <class F>
+void for_each_vertex(const scene::Scene& s, const symbolic::Symbolic_vertex& v, F&& f) {
+  using K = symbolic::Symbolic_vertex::Kind;
+  using P = symbolic::Symbolic_plane::Kind;
+  const auto& i = v.ids;
+  const auto edge = [&](std::size_t e) { for_each_vertex(s, {P::E, e}, f); };
+  const auto triangle = [&](std::size_t t) { for_each_vertex(s, {P::T, t}, f); };
+  switch (v.kind) {
+    case K::endpoint: f(i[0]); break;
+    case K::intersection: edge(i[0]), edge(i[1]); break;
+    case K::thread: edge(i[0]), f(i[1]); break;
+    case K::internal_intersection: edge(i[0]), edge(i[1]), triangle(i[2]); break;
+    case K::internal_thread: f(i[0]), edge(i[1]), triangle(i[2]); break;
+    case K::axis: triangle(i[0]); break;
+    case K::plumb: f(i[0]), triangle(i[1]); break;
+  }
+}
+
 }  // namespace
 
 struct Classification_filter::State {
   const scene::Scene* scene;
   std::vector<Motion> vertices;
   Motion x, z;
-  // The positions on the last instant's interval (valid for every instant
-  // in it), or none when they are too large to filter.
+  // The geometry on the last instant's interval (valid for every instant in
+  // it). Its vertices are evaluated when first needed at that instant, not
+  // all at once: a batch classifies near a few sites, and a new instant
+  // would otherwise cost the whole scene. `stamps[i]` is the epoch at which
+  // vertex i was evaluated, negated when it was too large to filter.
   std::optional<Interval> instant;
   std::optional<symbolic::Scene_geometry<Interval>> positions;
+  bool directions = false;  // x and z within the filter's reach at the instant
+  std::vector<std::int64_t> stamps;
   // The last rational instant asked for, and its interval: most calls ask
   // again at the same instant, and converting it is not free.
   std::optional<mpq_class> last_rational;
@@ -56,8 +92,8 @@ struct Classification_filter::State {
   // The planes and derived points at the current instant, computed once:
   // a plane is valid while its stamp equals `epoch`, so that a new instant
   // costs nothing in the number of planes.
-  std::uint64_t epoch = 1;
-  std::array<std::vector<std::pair<std::uint64_t, Plane4<Interval>>>, 3> planes;  // by Symbolic_plane::Kind
+  std::int64_t epoch = 1;
+  std::array<std::vector<std::pair<std::int64_t, Plane4<Interval>>>, 3> planes;  // by Symbolic_plane::Kind
   std::unordered_map<symbolic::Symbolic_vertex, Point4<Interval>, symbolic::Symbolic_hash> points;
 
   std::optional<Interval> enclose(const Exact_time& t) {
@@ -69,7 +105,24 @@ struct Classification_filter::State {
     return last_enclosure;
   }
 
-  // Inside a Rounding_scope.
+  // Whether vertex i is evaluated at the instant and within reach; inside a
+  // Rounding_scope.
+  bool evaluated(std::size_t i) {
+    std::int64_t& stamp = stamps[i];
+    if (stamp == epoch || stamp == -epoch) return stamp > 0;
+    const auto p = at(vertices[i], *instant);
+    stamp = p ? epoch : -epoch;
+    if (p) positions->set_vertex(i, *p);
+    return p.has_value();
+  }
+  template <class Feature>
+  bool within_reach(const Feature& f) {
+    bool all = true;
+    for_each_vertex(*scene, f, [&](std::size_t i) { all = evaluated(i) && all; });
+    return all;
+  }
+
+  // Inside a Rounding_scope, for features within reach.
   const Plane4<Interval>& plane(const symbolic::Symbolic_plane& p) {
     auto& of_kind = planes[static_cast<std::size_t>(p.kind)];
     if (of_kind.size() <= p.id) of_kind.resize(p.id + 1);
@@ -90,19 +143,12 @@ struct Classification_filter::State {
   void move_to(const Interval& t) {
     if (instant && instant->lower() == t.lower() && instant->upper() == t.upper()) return;
     instant = t;
-    positions.reset();
     ++epoch;
     points.clear();
     const filter::Rounding_scope upward;
-    std::vector<Point4<Interval>> v;
-    v.reserve(vertices.size());
-    for (const Motion& m : vertices) {
-      auto p = at(m, t);
-      if (!p) return;
-      v.push_back(*p);
-    }
     auto px = at(x, t), pz = at(z, t);
-    if (px && pz) positions.emplace(*scene, std::move(v), *px, *pz);
+    directions = px && pz;
+    if (directions) positions->set_directions(*px, *pz);
   }
 };
 
@@ -113,6 +159,8 @@ Classification_filter::Classification_filter(const symbolic::Scene_geometry<Poly
   s.x = enclose(motion.x());
   s.z = enclose(motion.z());
   for (const auto& p : motion.vertices()) s.vertices.push_back(enclose(p));
+  s.stamps.assign(s.vertices.size(), 0);
+  s.positions.emplace(*s.scene, std::vector<Point4<Interval>>(s.vertices.size()), Point4<Interval>{}, Point4<Interval>{});
 }
 
 Classification_filter::~Classification_filter() = default;
@@ -123,8 +171,8 @@ int Classification_filter::side(const symbolic::Symbolic_vertex& v, const symbol
   const auto when = s.enclose(t);
   if (!when) return 0;
   s.move_to(*when);
-  if (!s.positions) return 0;
   const filter::Rounding_scope upward;
+  if (!s.directions || !s.within_reach(p) || !s.within_reach(v)) return 0;
   const Point4<Interval>& x = s.point(v);
   const int value = filter::sign(dot(s.plane(p), x));
   // A scene vertex has W > 0 (scene_geometry.hpp); a derived one needs its sign.

@@ -66,6 +66,10 @@ public:
   // classifies the same features against each other many times.
   const Plane4<typename K::Poly>& plane_poly(const symbolic::Symbolic_plane& p) const;
   const Point4<typename K::Poly>& point_poly(const symbolic::Symbolic_vertex& v) const;
+  // coplanar (thesis equation 6.3) of the endpoints of scene edges e1 and
+  // e2, in that order: zero when their lines meet. Computed once per pair,
+  // like the motion polynomials (the reduced set's ET certificates).
+  const typename K::Poly& edge_lines(std::size_t e1, std::size_t e2) const;
   // The sign of f at t, or just after t where f(t) = 0 (zero only for f = 0).
   int lex_sign(const typename K::Poly& f, const typename K::Time& t) const;
   // Whether the coefficients of t^from, t^(from+1), ... of f are all zero by
@@ -78,7 +82,11 @@ public:
   // or, where that vanishes identically (v built from planes that coincide
   // in the unperturbed scene, such as P(v) and E(e) of an edge parallel to
   // x), the first non-zero order of its ε-expansion.
-  Point4<typename K::Poly> position(const symbolic::Symbolic_vertex& v) const;
+  // Computed once per vertex, like the motion polynomials.
+  const Point4<typename K::Poly>& position(const symbolic::Symbolic_vertex& v) const;
+  // The P-plane of the pencil through v, x ∨ z ∨ position(v): the implicit
+  // P-cut through an intersection point (thesis 6.4.2). Computed once per vertex.
+  const Plane4<typename K::Poly>& p_plane_through(const symbolic::Symbolic_vertex& v) const;
   // How many classifications rule 4 could not decide, and the first few.
   long unresolved() const { return unresolved_; }
   const std::vector<std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>>& unresolved_cases() const {
@@ -104,6 +112,7 @@ private:
   Classification classify_exactly(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p,
                                   const typename K::Time& t) const;
   const symbolic::Scene_geometry<Poly<typename K::Poly>>& perturbed() const;
+  Point4<typename K::Poly> position_of(const symbolic::Symbolic_vertex& v) const;  // position, not cached
 
   const K* k_;
   symbolic::Scene_geometry<typename K::Poly> motion_;
@@ -113,6 +122,9 @@ private:
   mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> points_;
   mutable std::unordered_map<Pair, Deciding, symbolic::Symbolic_hash> deciding_;
   mutable std::unordered_map<Pair, std::vector<typename K::Poly>, symbolic::Symbolic_hash> certificates_;
+  mutable std::unordered_map<std::pair<std::size_t, std::size_t>, typename K::Poly, symbolic::Symbolic_hash> edge_lines_;
+  mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> positions_;
+  mutable std::unordered_map<symbolic::Symbolic_vertex, Plane4<typename K::Poly>, symbolic::Symbolic_hash> p_planes_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
   // Rule 2 on intervals first: the exact kernel with its filter on only.

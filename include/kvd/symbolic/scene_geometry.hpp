@@ -13,6 +13,7 @@
 // vertices need the sign of W when sides are taken.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "kvd/geometry/plucker.hpp"
@@ -36,6 +37,14 @@ public:
 
   Plane4<R> plane(const Symbolic_plane& p) const;
   Point4<R> point(const Symbolic_vertex& v) const;
+
+  // For a geometry at an instant that evaluates only the vertices it needs
+  // (the interval filter, at each new instant): replace positions in place.
+  void set_vertex(std::size_t v, Point4<R> p) { vertices_.at(v) = std::move(p); }
+  void set_directions(Point4<R> x, Point4<R> z) {
+    x_ = std::move(x);
+    z_ = std::move(z);
+  }
 
 private:
   const scene::Scene* scene_;

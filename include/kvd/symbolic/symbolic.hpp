@@ -83,6 +83,7 @@ struct Triangle_fragment {
 // Hashes, for the caches and indexes that look these up by name.
 struct Symbolic_hash {
   static std::size_t mix(std::size_t h, std::size_t v) { return h * 0x9e3779b97f4a7c15ull + v; }
+  std::size_t operator()(std::size_t id) const { return id; }
   std::size_t operator()(const Symbolic_plane& p) const { return mix(static_cast<std::size_t>(p.kind), p.id); }
   std::size_t operator()(const Symbolic_edge& e) const { return mix(mix(static_cast<std::size_t>(e.kind), e.a), e.b); }
   std::size_t operator()(const Symbolic_vertex& v) const {
