@@ -4,6 +4,7 @@
 
 #include <boost/heap/pairing_heap.hpp>
 
+#include "kvd/detail/tree/slot_room.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/tree/slot_marks.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -32,6 +33,7 @@ public:
   explicit Tree_queue(const K& k) : k_(&k) {}
 
   void reset(const tree::Kvd_tree& t) override {
+    tree::room_for(slots_, t.nodes.size());
     slots_.assign(t.nodes.size(), Slot{});
     for (std::size_t i = 0; i < t.nodes.size(); ++i) {
       slots_[i].left = t.nodes[i].left;
@@ -48,6 +50,7 @@ public:
   void reshape(const tree::Kvd_tree& t, const tree::Tree_links& links, const std::vector<int>* edited) override {
     for (std::size_t i = t.nodes.size(); i < slots_.size(); ++i)
       for (const auto& [id, time] : slots_[i].own) where_[id] = -1;
+    tree::room_for(slots_, t.nodes.size());
     slots_.resize(t.nodes.size());  // new slots are dirty
     root_ = t.root;
     // Released slots are left without links, and dirty: their earliest

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "kvd/detail/tree/slot_room.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/tree/compare.hpp"
@@ -30,10 +31,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
                                                               const std::set<Certificate_key>& failed, Work& work) {
   // Marks left by an update that threw are not this update's.
   for (tree::Slot_marks* m : {&failed_, &marked_, &not_kept_, &given_, &rewritten_, &fresh_}) m->clear();
-  // Room to grow, taken when the records are first made (a vector filled
-  // from empty has no spare capacity): the first batch that adds a node
-  // would otherwise move every record.
-  if (records_.capacity() < t.nodes.size()) records_.reserve(t.nodes.size() + t.nodes.size() / 2);
+  tree::room_for(records_, t.nodes.size());
   records_.resize(std::max(records_.size(), t.nodes.size()));
   const bool whole = !edited || remake_;
   // The slots whose record holds a failed certificate, from the holders of

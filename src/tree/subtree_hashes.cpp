@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "kvd/detail/tree/slot_room.hpp"
 #include "kvd/detail/tree/digest.hpp"
 #include "kvd/tree/compare.hpp"
 
@@ -15,12 +16,14 @@ std::size_t at(int i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
 void Subtree_hashes::reset(const Kvd_tree& t) {
+  room_for(hash_, t.nodes.size());
   hash_.assign(t.nodes.size(), {});
   // Every slot is stale; released ones are never reached from the root.
   rehash(t, t.root, [](std::size_t) { return true; });
 }
 
 void Subtree_hashes::update(const Kvd_tree& t, const Tree_links& links, const std::vector<int>& changed) {
+  room_for(hash_, t.nodes.size());
   hash_.resize(t.nodes.size());
   for (int n : changed)
     if (links.live(n)) links.mark_path(n, stale_);

@@ -1,0 +1,17 @@
+// Arrays indexed by node slot grow with the tree. Sized exactly when a tree
+// is built, the first node a batch adds would move the whole array, and
+// that batch would pay for the size of the tree: room is taken for half as
+// many slots again whenever an array outgrows its capacity.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace kvd::tree {
+
+template <class T>
+void room_for(std::vector<T>& v, std::size_t slots) {
+  if (slots > v.capacity()) v.reserve(slots + slots / 2);
+}
+
+}  // namespace kvd::tree
