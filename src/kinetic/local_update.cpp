@@ -101,30 +101,49 @@ std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& jou
   return static_cast<std::size_t>(std::unique(slots.begin(), slots.end()) - slots.begin());
 }
 
-// Whether a failure's changed signs all lie in the subtree of the highest
-// node above its own cut by a site it names (proofs/local_update.md, section
-// 5): a point crossing a P-plane of the pencil (VV, IV, II), or a vertex
-// crossing the E-plane of an edge of another triangle. A vertex of one of
-// the edge's own triangles crossing its E-plane is that triangle turning
-// through the direction x, which swaps the sides of every node of the
-// edge's wall, wherever it is. The others are collisions or take the whole
-// tree too.
+// How a failure's changed signs are confined (proofs/local_update.md,
+// section 5). `named`: all lie in the subtree of the highest node above its
+// own that is cut by a site it names: a point crossing a P-plane of the
+// pencil (VV, IV, II), or a vertex crossing the E-plane of an edge of
+// another triangle. `turning`: a vertex crossing the E-plane of an edge of
+// its own triangle T, which is T turning through z: T's plane and the
+// E-planes of its three edges coincide at the event, and the signs that
+// change are decided at nodes cut by those four sites, wherever they are,
+// so in the subtree of their lowest common ancestor. The other failures are
+// collisions or take the whole tree.
+enum class Confinement { named, turning, none };
+
 template <class Poly>
-bool confined(const scene::Scene& s, const Certificate<Poly>& c) {
+Confinement confinement(const scene::Scene& s, const Certificate<Poly>& c) {
   switch (c.key.type) {
     case Certificate_type::VV:
     case Certificate_type::IV:
-    case Certificate_type::II: return true;
+    case Certificate_type::II: return Confinement::named;
     case Certificate_type::VE: {
       const SV& v = c.key.vertex;
       const SP* e = std::get_if<SP>(&c.key.against);
-      if (v.kind != SV::Kind::endpoint || !e || e->kind != SP::Kind::E) return false;
-      return std::ranges::none_of(s.edge_triangles[e->id], [&](std::size_t t) {
+      if (v.kind != SV::Kind::endpoint || !e || e->kind != SP::Kind::E) return Confinement::none;
+      const bool own = std::ranges::any_of(s.edge_triangles[e->id], [&](std::size_t t) {
         return std::ranges::find(s.triangles[t], v.ids[0]) != s.triangles[t].end();
       });
+      return own ? Confinement::turning : Confinement::named;
     }
-    default: return false;
+    default: return Confinement::none;
   }
+}
+
+// The sites of a turning triangle: the triangles of the crossed edge that
+// hold the vertex (their planes turn through z), and their edges' E-planes.
+template <class Poly>
+Sites turning_sites(const scene::Scene& s, const Certificate<Poly>& c) {
+  Sites out;
+  const std::size_t v = c.key.vertex.ids[0];
+  for (std::size_t t : s.edge_triangles[std::get<SP>(c.key.against).id]) {
+    if (std::ranges::find(s.triangles[t], v) == s.triangles[t].end()) continue;
+    out.insert({SP::Kind::T, t});
+    for (std::size_t e : s.triangle_edges[t]) out.insert({SP::Kind::E, e});
+  }
+  return out;
 }
 
 // Whether a is n or one of n's ancestors.
@@ -211,7 +230,14 @@ int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tre
   // it names (named, not only moved: a VV vertex's crossed P-cut is above).
   std::vector<int> tops;
   for (const Certificate<Poly>* c : failing) {
-    if (!confined(s, *c)) return -1;
+    const Confinement how = confinement(s, *c);
+    if (how == Confinement::none) return -1;
+    if (how == Confinement::turning) {
+      tops.push_back(c->node);
+      for (const SP& site : turning_sites(s, *c))
+        for (int n : links.holding(site)) tops.push_back(n);
+      continue;
+    }
     const Sites named = sites_of(s, *c, Reach::named);
     int top = c->node;
     for (int n = c->node; n >= 0; n = links.parent(n))

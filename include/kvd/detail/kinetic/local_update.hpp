@@ -69,9 +69,10 @@ struct Update_cost {
 // The subtree a batch is confined to (proofs/local_update.md, section 5):
 // the lowest node whose subtree holds, for every failing certificate, the
 // node holding it and every ancestor of that node cut by a site the
-// certificate names (moved or not). -1 (the whole tree) when a failure is
-// not a VV, IV or II one, or a VE one of a vertex off the edge's triangles,
-// or for no failure.
+// certificate names (moved or not); for a VE failure of a vertex of one of
+// the edge's triangles (that triangle turning through z), every node cut
+// by the triangle or by its edges' E-planes. -1 (the whole tree) when a
+// failure is not a VV, IV, II or VE one, or for no failure.
 template <class Poly>
 int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
                  const std::vector<const Certificate<Poly>*>& failing);
