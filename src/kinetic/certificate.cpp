@@ -43,21 +43,12 @@ bool printed_before(const Certificate_key& a, const Certificate_key& b) {
 namespace {
 
 bool names_object(const scene::Scene& s, const symbolic::Symbolic_vertex& v, std::size_t object) {
-  using VK = symbolic::Symbolic_vertex::Kind;
-  const auto vertex = [&](std::size_t i) { return s.vertex_object[i] == object; };
-  const auto edge = [&](std::size_t i) { return s.edge_object[i] == object; };
-  const auto triangle = [&](std::size_t i) { return s.triangle_object[i] == object; };
-  const auto& [a, b, c] = v.ids;
-  switch (v.kind) {
-    case VK::endpoint: return vertex(a);
-    case VK::intersection: return edge(a) || edge(b);
-    case VK::thread: return edge(a) || vertex(b);
-    case VK::internal_intersection: return edge(a) || edge(b) || triangle(c);
-    case VK::internal_thread: return vertex(a) || edge(b) || triangle(c);
-    case VK::axis: return triangle(a);
-    case VK::plumb: return vertex(a) || triangle(b);
-  }
-  return true;
+  bool named = false;
+  symbolic::for_each_feature(
+      v, [&](std::size_t i) { named = named || s.vertex_object[i] == object; },
+      [&](std::size_t i) { named = named || s.edge_object[i] == object; },
+      [&](std::size_t i) { named = named || s.triangle_object[i] == object; });
+  return named;
 }
 
 bool names_object(const scene::Scene& s, const symbolic::Symbolic_plane& p, std::size_t object) {

@@ -50,7 +50,6 @@ public:
   void reshape(const tree::Kvd_tree& t, const tree::Tree_links& links, const std::vector<int>* edited) override {
     for (std::size_t i = t.nodes.size(); i < slots_.size(); ++i)
       for (const auto& [id, time] : slots_[i].own) where_[id] = -1;
-    tree::room_for(slots_, t.nodes.size());
     slots_.resize(t.nodes.size());  // new slots are dirty
     root_ = t.root;
     // Released slots are left without links, and dirty: their earliest

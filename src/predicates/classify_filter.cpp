@@ -54,20 +54,10 @@ void for_each_vertex(const scene::Scene& s, const symbolic::Symbolic_plane& p, F
 }
 template <class F>
 void for_each_vertex(const scene::Scene& s, const symbolic::Symbolic_vertex& v, F&& f) {
-  using K = symbolic::Symbolic_vertex::Kind;
   using P = symbolic::Symbolic_plane::Kind;
-  const auto& i = v.ids;
-  const auto edge = [&](std::size_t e) { for_each_vertex(s, {P::E, e}, f); };
-  const auto triangle = [&](std::size_t t) { for_each_vertex(s, {P::T, t}, f); };
-  switch (v.kind) {
-    case K::endpoint: f(i[0]); break;
-    case K::intersection: edge(i[0]), edge(i[1]); break;
-    case K::thread: edge(i[0]), f(i[1]); break;
-    case K::internal_intersection: edge(i[0]), edge(i[1]), triangle(i[2]); break;
-    case K::internal_thread: f(i[0]), edge(i[1]), triangle(i[2]); break;
-    case K::axis: triangle(i[0]); break;
-    case K::plumb: f(i[0]), triangle(i[1]); break;
-  }
+  symbolic::for_each_feature(
+      v, f, [&](std::size_t e) { for_each_vertex(s, {P::E, e}, f); },
+      [&](std::size_t t) { for_each_vertex(s, {P::T, t}, f); });
 }
 
 }  // namespace

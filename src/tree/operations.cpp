@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "kvd/detail/tree/slot_room.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
 
@@ -73,7 +72,6 @@ template <class K>
 int Tree_editor<K>::make(Node n) {
   int i;
   if (t_.free_nodes.empty()) {
-    room_for(t_.nodes, t_.nodes.size() + 1);
     t_.nodes.push_back(std::move(n));
     i = static_cast<int>(t_.nodes.size()) - 1;
   } else {

@@ -23,7 +23,6 @@ void Subtree_hashes::reset(const Kvd_tree& t) {
 }
 
 void Subtree_hashes::update(const Kvd_tree& t, const Tree_links& links, const std::vector<int>& changed) {
-  room_for(hash_, t.nodes.size());
   hash_.resize(t.nodes.size());
   for (int n : changed)
     if (links.live(n)) links.mark_path(n, stale_);

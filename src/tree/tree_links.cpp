@@ -12,15 +12,11 @@ std::size_t at(int i) { return static_cast<std::size_t>(i); }
 
 }  // namespace
 
-void Tree_links::room(std::size_t slots) {
-  room_for(parent_, slots);
-  room_for(released_, slots);
-  room_for(indexed_, slots);
-  room_for(cut_, slots);
-}
-
 void Tree_links::reset(const Kvd_tree& t) {
-  room(t.nodes.size());
+  room_for(parent_, t.nodes.size());
+  room_for(released_, t.nodes.size());
+  room_for(indexed_, t.nodes.size());
+  room_for(cut_, t.nodes.size());
   parent_.assign(t.nodes.size(), -1);
   released_.assign(t.nodes.size(), 0);
   indexed_.assign(t.nodes.size(), 0);
@@ -40,7 +36,6 @@ void Tree_links::update(const Kvd_tree& t, const std::vector<int>& changed) {
   const std::size_t size = t.nodes.size();
   // Slots past the end were released and dropped.
   for (std::size_t i = size; i < indexed_.size(); ++i) unindex(static_cast<int>(i));
-  room(size);
   parent_.resize(size, -1);
   indexed_.resize(size, 0);
   cut_.resize(size);

@@ -80,6 +80,23 @@ struct Triangle_fragment {
   auto operator<=>(const Triangle_fragment&) const = default;
 };
 
+// The scene features a symbolic vertex is built from, by its kind: calls
+// vertex(i), edge(i) or triangle(i) for each of its ids in order.
+template <class OnVertex, class OnEdge, class OnTriangle>
+void for_each_feature(const Symbolic_vertex& v, OnVertex&& vertex, OnEdge&& edge, OnTriangle&& triangle) {
+  using K = Symbolic_vertex::Kind;
+  const auto& [a, b, c] = v.ids;
+  switch (v.kind) {
+    case K::endpoint: vertex(a); break;
+    case K::intersection: edge(a), edge(b); break;
+    case K::thread: edge(a), vertex(b); break;
+    case K::internal_intersection: edge(a), edge(b), triangle(c); break;
+    case K::internal_thread: vertex(a), edge(b), triangle(c); break;
+    case K::axis: triangle(a); break;
+    case K::plumb: vertex(a), triangle(b); break;
+  }
+}
+
 // Hashes, for the caches and indexes that look these up by name.
 struct Symbolic_hash {
   static std::size_t mix(std::size_t h, std::size_t v) { return h * 0x9e3779b97f4a7c15ull + v; }

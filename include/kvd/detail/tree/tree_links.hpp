@@ -35,7 +35,6 @@ public:
 private:
   void index(const Kvd_tree& t, int n);
   void unindex(int n);
-  void room(std::size_t slots);  // slot_room.hpp, for every per-slot array
 
   std::vector<int> parent_;      // per slot
   std::vector<char> released_;   // per slot
