@@ -17,17 +17,48 @@
 
 #include <boost/numeric/interval.hpp>
 
+#if defined(__SSE2_MATH__)
+#include <xmmintrin.h>
+
+#include <cmath>
+#endif
+
 #include "kvd/kernel/exact_time.hpp"
 #include "kvd/kernel/poly.hpp"
 
 namespace kvd::filter {
 
 namespace bi = boost::numeric::interval_lib;
+
+#if defined(__SSE2_MATH__)
+// Where double arithmetic is SSE2's (x86-64), the rounding mode is MXCSR's
+// alone, and a result has no excess precision to strip. Boost's C99 control
+// goes through fesetround, which also writes the x87 control word, and
+// stores every result to a volatile; this one sets MXCSR, and only when it
+// changes (a scope inside a scope costs a read).
+struct Rounding_control {
+  using rounding_mode = unsigned int;
+  static constexpr unsigned int mask = 0x6000;  // MXCSR's rounding-control bits
+  static void get_rounding_mode(rounding_mode& m) { m = _mm_getcsr(); }
+  static void set_rounding_mode(rounding_mode m) {
+    if (_mm_getcsr() != m) _mm_setcsr(m);
+  }
+  static void set_bits(unsigned int bits) { set_rounding_mode((_mm_getcsr() & ~mask) | bits); }
+  static void to_nearest() { set_bits(0x0000); }
+  static void downward() { set_bits(0x2000); }
+  static void upward() { set_bits(0x4000); }
+  static void toward_zero() { set_bits(0x6000); }
+  static double force_rounding(const double& r) { return r; }
+  static double to_int(const double& r) { return std::nearbyint(r); }
+};
+#else
+using Rounding_control = bi::rounding_control<double>;
+#endif
+using Rounded = bi::rounded_arith_opp<double, Rounding_control>;
 using Interval =
-    boost::numeric::interval<double, bi::policies<bi::save_state_nothing<bi::rounded_arith_opp<double>>,
-                                                  bi::checking_no_nan<double>>>;
+    boost::numeric::interval<double, bi::policies<bi::save_state_nothing<Rounded>, bi::checking_no_nan<double>>>;
 // Upward rounding for its lifetime; the caller's mode is restored after.
-using Rounding_scope = bi::save_state<bi::rounded_arith_opp<double>>;
+using Rounding_scope = bi::save_state<Rounded>;
 
 // Inputs of magnitude above 2^64 are not filtered. Below it no expression the
 // filter evaluates can overflow: the deepest, a classification value, has

@@ -148,10 +148,12 @@ private:
   // classification of s against a triangle of e_j, which the perturbation
   // decides.
   void edge_edge(const SV& s) {
-    const P& lines = c_.edge_lines(s.ids[0], s.ids[1]);
-    const P d = lines.is_zero() ? c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()}) : lines;
     const SP against{SP::Kind::E, s.ids[1]};
-    add({{Certificate_type::ET, s, against}, at_, positive(c_, std::vector<P>{d}, now_), {s}, {SP{SP::Kind::E, s.ids[0]}, against}});
+    const Certificate_key key{Certificate_type::ET, s, against};
+    if (made_.contains(key)) return;
+    const P& lines = c_.edge_lines(s.ids[0], s.ids[1]);
+    add(key, lines.is_zero() ? c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()}) : lines, {s},
+        {SP{SP::Kind::E, s.ids[0]}, against});
   }
 
   // Which stage decided a sign of the walk (the exact kernel's statistics).
@@ -293,19 +295,23 @@ private:
     }
   }
 
+  // A key met again at the node is made once (the first wins, and would be
+  // the same certificate).
   void emit(const Spec& s) {
     if (s.plane) {
-      add({{s.type, s.vertex, *s.plane}, at_,
-           positive(c_, std::vector<P>{c_.value(s.vertex, *s.plane)}, now_), {s.vertex}, {*s.plane}});
+      const Certificate_key key{s.type, s.vertex, *s.plane};
+      if (!made_.contains(key)) add(key, c_.value(s.vertex, *s.plane), {s.vertex}, {*s.plane});
       return;
     }
     // II (thesis 6.3.7): two intersection points at the same height.
-    add({{s.type, s.vertex, s.other}, at_,
-         positive(c_, std::vector<P>{dot(p_cut(s.other), c_.position(s.vertex))}, now_), {s.vertex, s.other}, {}});
+    const Certificate_key key{s.type, s.vertex, s.other};
+    if (!made_.contains(key)) add(key, dot(p_cut(s.other), c_.position(s.vertex)), {s.vertex, s.other}, {});
   }
 
-  void add(Certificate<P> cert) {
-    if (!cert.polys.empty()) made_.try_emplace(cert.key, std::move(cert));
+  void add(const Certificate_key& key, const P& q, std::vector<SV> vertices, std::vector<SP> planes) {
+    Certificate<P> cert{key, at_, {}, std::move(vertices), std::move(planes)};
+    append_positive(c_, q, now_, cert.polys);
+    if (!cert.polys.empty()) made_.emplace(key, std::move(cert));
   }
 
   const predicates::Classifier<K>& c_;

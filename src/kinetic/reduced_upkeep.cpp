@@ -112,13 +112,22 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     for (int child : {n.right, n.left})  // left first off the stack
       if (child >= 0) stack.push_back({child, children, v.depth + 1});
   }
-  // The holders of the keys that records not kept in place lose (with
-  // each touched key's holder before).
-  std::unordered_map<Certificate_key, int, Certificate_key_hash> before;
+  // The holders of the keys that records not kept in place lose. Each key
+  // the update touches is looked up in holders_ once: `touched` keeps its
+  // holder before and its holders (an element of holders_ stays in place
+  // until erased, which only step 4 does).
+  struct Touched {
+    int before;
+    std::vector<int>* holders;
+  };
+  std::unordered_map<Certificate_key, Touched, Certificate_key_hash> touched;
   const auto touch = [&](const Certificate_key& key) {
-    auto& h = holders_[key];
-    before.try_emplace(key, h.empty() ? -1 : h.front());
-    return &h;
+    const auto [it, fresh] = touched.try_emplace(key);
+    if (fresh) {
+      auto& h = holders_[key];
+      it->second = {h.empty() ? -1 : h.front(), &h};
+    }
+    return it->second.holders;
   };
   for (int slot : not_kept_slots)
     for (const auto& cert : records_[static_cast<std::size_t>(slot)].certificates) remove(*touch(cert.key), slot);
@@ -168,17 +177,20 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   records_.resize(t.nodes.size());
   remake_ = false;
   // 4. What changed in force: a key whose holder is new or rewritten; by key.
-  std::vector<std::pair<Certificate_key, int>> touched(before.begin(), before.end());
-  std::ranges::sort(touched);
+  std::vector<const std::pair<const Certificate_key, Touched>*> by_key;
+  by_key.reserve(touched.size());
+  for (const auto& entry : touched) by_key.push_back(&entry);
+  std::ranges::sort(by_key, {}, [](const auto* entry) -> const Certificate_key& { return entry->first; });
   Changes out;
-  for (const auto& [key, old] : touched) {
-    const auto it = holders_.find(key);
-    if (it->second.empty()) {
+  for (const auto* entry : by_key) {
+    const auto& [key, was] = *entry;
+    const int old = was.before;
+    if (was.holders->empty()) {
       if (old >= 0) out.gone.push_back(key);
-      holders_.erase(it);
+      holders_.erase(key);
       continue;
     }
-    const int holder = it->second.front();
+    const int holder = was.holders->front();
     const auto slot = static_cast<std::size_t>(holder);
     if (holder == old && !rewritten_[slot]) continue;
     for (const auto& cert : records_[slot].certificates)

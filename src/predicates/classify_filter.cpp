@@ -3,7 +3,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -84,13 +83,19 @@ struct Classification_filter::State {
   // costs nothing in the number of planes.
   std::int64_t epoch = 1;
   std::array<std::vector<std::pair<std::int64_t, Plane4<Interval>>>, 3> planes;  // by Symbolic_plane::Kind
-  std::unordered_map<symbolic::Symbolic_vertex, Point4<Interval>, symbolic::Symbolic_hash> points;
-  // A bound on that table: a build meets every derived point of the tree at
-  // one instant (291,783 at 3200 triangles), and a table of them
-  // would be freed, node by node, by the first batch after it. Emptied
-  // when full, and shrunk at each new instant, it costs a batch what the
-  // batch itself met.
-  static constexpr std::size_t max_points = std::size_t{1} << 16;
+  // The derived points met at the instant, in a direct-mapped cache: an
+  // entry is valid while its stamp equals `epoch`, and a point that meets
+  // an entry taken by another is computed again in its place. A build meets
+  // every derived point of the tree at one instant (291,783 at 3200
+  // triangles); a table of them all would have to be freed by the first
+  // batch after it, and a new instant costs the cache nothing.
+  struct Cached_point {
+    std::int64_t stamp = 0;
+    symbolic::Symbolic_vertex v{};
+    Point4<Interval> at;
+  };
+  static constexpr int cache_bits = 15;
+  std::vector<Cached_point> points = std::vector<Cached_point>(std::size_t{1} << cache_bits);
 
   std::optional<Interval> enclose(const Exact_time& t) {
     if (!t.is_rational()) return filter::enclose(t);
@@ -131,20 +136,17 @@ struct Classification_filter::State {
   }
   const Point4<Interval>& point(const symbolic::Symbolic_vertex& v) {
     if (v.kind == symbolic::Symbolic_vertex::Kind::endpoint) return positions->vertex(v.ids[0]);
-    auto it = points.find(v);
-    if (it == points.end()) {
-      if (points.size() >= max_points) points.clear();
-      it = points.emplace(v, positions->point(v)).first;
-    }
-    return it->second;
+    // Fibonacci hashing: the slot from the high bits of the product.
+    const std::size_t slot = (symbolic::Symbolic_hash()(v) * 0x9e3779b97f4a7c15ull) >> (64 - cache_bits);
+    Cached_point& c = points[slot];
+    if (c.stamp != epoch || c.v != v) c = {epoch, v, positions->point(v)};
+    return c.at;
   }
 
   void move_to(const Interval& t) {
     if (instant && instant->lower() == t.lower() && instant->upper() == t.upper()) return;
     instant = t;
     ++epoch;
-    points.clear();
-    if (points.bucket_count() > max_points / 16) points.rehash(0);
     const filter::Rounding_scope upward;
     auto px = at(x, t), pz = at(z, t);
     directions = px && pz;

@@ -58,7 +58,7 @@ public:
   // The polynomial whose sign, times that of the vertex's W, is the side:
   // the value, or under rule 4 the first ε-coefficient that is not
   // identically zero; zero for an incidence by construction.
-  typename K::Poly value(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const {
+  const typename K::Poly& value(const symbolic::Symbolic_vertex& v, const symbolic::Symbolic_plane& p) const {
     return deciding(symbolic::canonical(motion_.scene(), v), p).value;
   }
   const symbolic::Scene_geometry<typename K::Poly>& motion() const { return motion_; }
