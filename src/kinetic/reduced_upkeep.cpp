@@ -1,6 +1,7 @@
 #include "kvd/detail/kinetic/reduced_upkeep.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "kvd/detail/tree/slot_room.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
@@ -37,8 +38,8 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   // The slots whose record holds a failed certificate, from the holders of
   // the failed keys (records are read below only as they were on entry).
   for (const Certificate_key& key : failed)
-    if (const auto it = holders_.find(key); it != holders_.end())
-      for (int slot : it->second) failed_.set(static_cast<std::size_t>(slot));
+    if (const std::vector<int>* h = holders_.find(key))
+      for (int slot : *h) failed_.set(static_cast<std::size_t>(slot));
   const auto holds_failed = [&](std::size_t slot) { return failed_[slot]; };
   // What the walk must look at: the nodes the edit changed, those holding a
   // failed certificate, and their ancestors. An unmarked node below the
@@ -89,9 +90,9 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     if (!whole && !marked_[slot] && r.used && r.path == v.path) continue;
     ancestors.resize(v.depth);
     const auto children_of = [&] {
-      const auto [known, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersection_walls(n)}, next_path_);
-      next_path_ += fresh;
-      return known->second;
+      const auto [id, fresh] = paths_.try_emplace(Path{v.path, n.cut, intersection_walls(n)});
+      if (fresh) *id = next_path_++;
+      return *id;
     };
     const int key_path = names_walls(n) ? v.path : unwalled;
     int children;
@@ -112,25 +113,16 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     for (int child : {n.right, n.left})  // left first off the stack
       if (child >= 0) stack.push_back({child, children, v.depth + 1});
   }
-  // The holders of the keys that records not kept in place lose. Each key
-  // the update touches is looked up in holders_ once: `touched` keeps its
-  // holder before and its holders (an element of holders_ stays in place
-  // until erased, which only step 4 does).
-  struct Touched {
-    int before;
-    std::vector<int>* holders;
-  };
-  std::unordered_map<Certificate_key, Touched, Certificate_key_hash> touched;
-  const auto touch = [&](const Certificate_key& key) {
-    const auto [it, fresh] = touched.try_emplace(key);
-    if (fresh) {
-      auto& h = holders_[key];
-      it->second = {h.empty() ? -1 : h.front(), &h};
-    }
-    return it->second.holders;
+  // The holders of the keys that records not kept in place lose (with
+  // each touched key's holder before).
+  std::unordered_map<Certificate_key, int, Certificate_key_hash> before;
+  const auto touch = [&](const Certificate_key& key) -> std::vector<int>& {
+    auto& h = holders_[key];
+    before.try_emplace(key, h.empty() ? -1 : h.front());
+    return h;
   };
   for (int slot : not_kept_slots)
-    for (const auto& cert : records_[static_cast<std::size_t>(slot)].certificates) remove(*touch(cert.key), slot);
+    for (const auto& cert : records_[static_cast<std::size_t>(slot)].certificates) remove(touch(cert.key), slot);
   // 2. A pending key held before by another slot that is not kept in place
   // (the rebuild renumbers every node) keeps that slot's certificates;
   // the other pending nodes make theirs. Records are written afterwards:
@@ -139,8 +131,8 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   std::vector<std::vector<Certificate<Poly>>> certs(pending.size());
   std::vector<bool> made(pending.size());
   for (std::size_t p = 0; p < pending.size(); ++p) {
-    const auto old = where_.find(pending[p].key);
-    const auto from = old == where_.end() ? records_.size() : static_cast<std::size_t>(old->second);
+    const int* old = where_.find(pending[p].key);
+    const auto from = old ? static_cast<std::size_t>(*old) : records_.size();
     if (!remake_ && from < records_.size() && not_kept_[from] && !holds_failed(from) && given_.set(from)) {
       certs[p] = std::move(records_[from].certificates);
     } else {
@@ -153,7 +145,7 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   // 3. The records of the tree just after.
   for (int slot : not_kept_slots) {
     Record& r = records_[static_cast<std::size_t>(slot)];
-    if (const auto it = where_.find(r.key); it != where_.end() && it->second == slot) where_.erase(it);
+    if (const int* w = where_.find(r.key); w && *w == slot) where_.erase(r.key);
     r = Record{};
   }
   for (std::size_t p = 0; p < pending.size(); ++p) {
@@ -167,9 +159,10 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
     r.certificates = std::move(certs[p]);
     for (auto& cert : r.certificates) {
       cert.node = pending[p].node;
-      add(*touch(cert.key), pending[p].node);
+      add(touch(cert.key), pending[p].node);
     }
-    where_.try_emplace(pending[p].key, pending[p].node);  // a key met twice stays with its first node
+    // A key met twice stays with its first node.
+    if (const auto [w, fresh] = where_.try_emplace(pending[p].key); fresh) *w = pending[p].node;
     r.key = std::move(pending[p].key);
     rewritten_.set(slot);
     if (made[p]) fresh_.set(slot);
@@ -177,20 +170,17 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   records_.resize(t.nodes.size());
   remake_ = false;
   // 4. What changed in force: a key whose holder is new or rewritten; by key.
-  std::vector<const std::pair<const Certificate_key, Touched>*> by_key;
-  by_key.reserve(touched.size());
-  for (const auto& entry : touched) by_key.push_back(&entry);
-  std::ranges::sort(by_key, {}, [](const auto* entry) -> const Certificate_key& { return entry->first; });
+  std::vector<std::pair<Certificate_key, int>> touched(before.begin(), before.end());
+  std::ranges::sort(touched);
   Changes out;
-  for (const auto* entry : by_key) {
-    const auto& [key, was] = *entry;
-    const int old = was.before;
-    if (was.holders->empty()) {
+  for (const auto& [key, old] : touched) {
+    const std::vector<int>& h = *holders_.find(key);
+    if (h.empty()) {
       if (old >= 0) out.gone.push_back(key);
       holders_.erase(key);
       continue;
     }
-    const int holder = was.holders->front();
+    const int holder = h.front();
     const auto slot = static_cast<std::size_t>(holder);
     if (holder == old && !rewritten_[slot]) continue;
     for (const auto& cert : records_[slot].certificates)

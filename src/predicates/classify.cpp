@@ -96,9 +96,12 @@ Point4<typename K::Poly> Classifier<K>::position_of(const symbolic::Symbolic_ver
 template <class K>
 const typename Classifier<K>::Deciding& Classifier<K>::deciding(const symbolic::Symbolic_vertex& v,
                                                                 const symbolic::Symbolic_plane& p) const {
-  auto it = deciding_.find({v, p});
-  if (it == deciding_.end()) it = deciding_.emplace(std::pair{v, p}, decide(v, p)).first;
-  return it->second;
+  const Pair key{v, p};
+  if (const Deciding* d = deciding_.find(key)) return *d;
+  Deciding d = decide(v, p);  // before the insertion, which may move the table's entries
+  Deciding& slot = deciding_[key];
+  slot = std::move(d);
+  return slot;
 }
 
 template <class K>

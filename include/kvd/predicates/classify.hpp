@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "kvd/detail/flat_map.hpp"
 #include "kvd/scene/scene.hpp"
 #include "kvd/symbolic/incidence.hpp"
 #include "kvd/symbolic/scene_geometry.hpp"
@@ -120,7 +121,9 @@ private:
   using Pair = std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>;
   mutable std::unordered_map<symbolic::Symbolic_plane, Plane4<typename K::Poly>, symbolic::Symbolic_hash> planes_;
   mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> points_;
-  mutable std::unordered_map<Pair, Deciding, symbolic::Symbolic_hash> deciding_;
+  // Flat (kvd::detail::Flat_map): a reference into it lasts until the next
+  // insertion, so no caller holds one across a deciding() call.
+  mutable kvd::detail::Flat_map<Pair, Deciding, symbolic::Symbolic_hash> deciding_;
   mutable std::unordered_map<Pair, std::vector<typename K::Poly>, symbolic::Symbolic_hash> certificates_;
   mutable std::unordered_map<std::pair<std::size_t, std::size_t>, typename K::Poly, symbolic::Symbolic_hash> edge_lines_;
   mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> positions_;

@@ -9,11 +9,11 @@
 #include <cstddef>
 #include <optional>
 #include <set>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "kvd/kinetic/certificate.hpp"
+#include "kvd/detail/flat_map.hpp"
 #include "kvd/detail/kinetic/event_queue.hpp"
 
 namespace kvd::kinetic {
@@ -35,8 +35,8 @@ public:
     std::set<Certificate_key> offered;
     for (const Offer& o : offers) offered.insert(o.certificate->key);
     std::vector<Certificate_key> gone;
-    for (const auto* entry : by_key())
-      if (!offered.contains(entry->first)) gone.push_back(entry->first);
+    for (const auto& [key, id] : by_key())
+      if (!offered.contains(*key)) gone.push_back(*key);
     apply(gone, offers, queue, fails);
   }
 
@@ -46,18 +46,17 @@ public:
   void apply(const std::vector<Certificate_key>& gone, const std::vector<Offer>& changed, Event_queue<K>& queue,
              Fails fails) {
     for (const Certificate_key& key : gone) {
-      const auto it = ids_.find(key);
-      const std::size_t id = it->second;
+      const std::size_t id = *ids_.find(key);
       queue.set(id, entries_[id].certificate->node, std::nullopt);
       entries_[id] = Entry{};
       free_.push_back(id);
-      ids_.erase(it);
+      ids_.erase(key);
     }
     for (const Offer& o : changed) {
       const Certificate<Poly>& c = *o.certificate;
-      auto [it, fresh] = ids_.try_emplace(c.key);
-      if (fresh) it->second = allocate();
-      const std::size_t id = it->second;
+      auto [slot, fresh] = ids_.try_emplace(c.key);
+      if (fresh) *slot = allocate();
+      const std::size_t id = *slot;
       Entry& e = entries_[id];
       if (fresh || (o.made && !same_polys(*e.certificate, c))) {
         e.certificate = c;
@@ -85,7 +84,7 @@ public:
   // By key.
   template <class F>
   void for_each(F f) const {
-    for (const auto* entry : by_key()) f(*entries_[entry->second].certificate);
+    for (const auto& [key, id] : by_key()) f(*entries_[id].certificate);
   }
 
 private:
@@ -96,11 +95,11 @@ private:
 
   // The entries in force, by key: what is read whole goes in key order, so
   // that nothing depends on the hash table's order.
-  std::vector<const std::pair<const Certificate_key, std::size_t>*> by_key() const {
-    std::vector<const std::pair<const Certificate_key, std::size_t>*> out;
+  std::vector<std::pair<const Certificate_key*, std::size_t>> by_key() const {
+    std::vector<std::pair<const Certificate_key*, std::size_t>> out;
     out.reserve(ids_.size());
-    for (const auto& entry : ids_) out.push_back(&entry);
-    std::ranges::sort(out, {}, [](const auto* entry) -> const Certificate_key& { return entry->first; });
+    ids_.for_each([&](const Certificate_key& key, std::size_t id) { out.emplace_back(&key, id); });
+    std::ranges::sort(out, {}, [](const auto& entry) -> const Certificate_key& { return *entry.first; });
     return out;
   }
 
@@ -119,7 +118,7 @@ private:
                               [](const Poly& p, const Poly& q) { return p.coefficients() == q.coefficients(); });
   }
 
-  std::unordered_map<Certificate_key, std::size_t, Certificate_key_hash> ids_;
+  kvd::detail::Flat_map<Certificate_key, std::size_t, Certificate_key_hash> ids_;
   std::vector<Entry> entries_;  // by id; empty when free
   std::vector<std::size_t> free_;
 };

@@ -23,9 +23,9 @@
 #include <set>
 #include <string>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
+#include "kvd/detail/flat_map.hpp"
 #include "kvd/detail/tree/slot_marks.hpp"
 #include "kvd/detail/tree/tree_links.hpp"
 #include "kvd/kinetic/certificate.hpp"
@@ -129,10 +129,10 @@ private:
     std::vector<Certificate<Poly>> certificates;
   };
   std::vector<Record> records_;
-  std::unordered_map<Key, int, Hash> where_;  // the slot holding each key
+  kvd::detail::Flat_map<Key, int, Hash> where_;  // the slot holding each key
   // The slots holding each key, increasing (one but in degenerate cases).
-  std::unordered_map<Certificate_key, std::vector<int>, Certificate_key_hash> holders_;
-  std::unordered_map<Path, int, Hash> paths_;  // every path met since the last clear()
+  kvd::detail::Flat_map<Certificate_key, std::vector<int>, Certificate_key_hash> holders_;
+  kvd::detail::Flat_map<Path, int, Hash> paths_;  // every path met since the last clear()
   int next_path_ = 0;
   bool remake_ = false;
   // One update's marks per slot: holding a failed certificate, on a path
