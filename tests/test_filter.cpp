@@ -123,6 +123,35 @@ TEST_CASE("coefficients beyond 2^64 are filtered after an exact power-of-two sca
   }
 }
 
+// The filter encloses a coefficient without rational arithmetic where the
+// double range allows (one ulp from mpq_get_d's truncation), and exactly
+// near the ends of that range: at every magnitude, for integers that are
+// doubles exactly, integers that are not, and rationals that are not
+// dyadic, a value an ulp-sized step either side of a root gets its exact
+// sign, and the root itself is left to exact arithmetic.
+TEST_CASE("coefficients of every magnitude are enclosed soundly", "[filter]") {
+  const mpq_class r = q(1, 3);
+  for (int e : {-1000, -940, -899, -600, -60, 0, 52, 53, 54, 64, 500, 990, 1001}) {
+    const std::vector<mpq_class> coefficients{two_to(e), two_to(e) + 1, two_to(e) * q(7, 3),
+                                              two_to(e) * q((1 << 20) + 1, 1 << 20)};
+    for (const mpq_class& c : coefficients) {
+      const P p = linear(-c * r, c);  // c (t - 1/3)
+      for (int k : {40, 52, 53, 60}) {
+        const mpq_class step = two_to(-k) * r;
+        const auto above = both([&](const Exact_kernel& kernel) { return kernel.sign_at(p, Exact_time(r + step)); });
+        CHECK(above.filtered == 1);
+        CHECK(above.exact == 1);
+        const auto below = both([&](const Exact_kernel& kernel) { return kernel.sign_at(p, Exact_time(r - step)); });
+        CHECK(below.filtered == -1);
+        CHECK(below.exact == -1);
+      }
+      const auto at = both([&](const Exact_kernel& kernel) { return kernel.sign_at(p, Exact_time(r)); });
+      CHECK(at.filtered == 0);
+      CHECK_FALSE(at.by_filter);
+    }
+  }
+}
+
 TEST_CASE("roots 2^-110 apart are told apart, and signs between them are exact", "[filter]") {
   // (t^2 - 2) and (t^2 - 2 - 2^-110 t): two algebraic roots about 2^-112 apart.
   const P two = linear(-2, 0) + P(std::vector<mpq_class>{0, 0, 1});

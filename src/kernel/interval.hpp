@@ -69,9 +69,10 @@ inline constexpr double max_input = 18446744073709551616.0;  // 2^64
 // The sign of every number in x, or 0 when x holds zero.
 inline int sign(const Interval& x) { return x.lower() > 0 ? 1 : (x.upper() < 0 ? -1 : 0); }
 
-// A double interval holding q, or none when |q| exceeds max_input. Call
-// outside a Rounding_scope (GMP converts).
-std::optional<Interval> enclose(const mpq_class& q);
+// A double interval holding q times 2^-shift (exactly), or none when that
+// exceeds max_input: the point where that is a double, else the interval
+// one ulp wide that holds it. Call outside a Rounding_scope (GMP converts).
+std::optional<Interval> enclose(const mpq_class& q, unsigned long shift = 0);
 // A double interval holding the instant: its value, or its isolating
 // interval once refined to a relative width of about 2^-50.
 std::optional<Interval> enclose(const Exact_time& t);
