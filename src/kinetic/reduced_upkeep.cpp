@@ -1,7 +1,6 @@
 #include "kvd/detail/kinetic/reduced_upkeep.hpp"
 
 #include <algorithm>
-#include <unordered_map>
 
 #include "kvd/detail/tree/slot_room.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
@@ -115,10 +114,10 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   }
   // The holders of the keys that records not kept in place lose (with
   // each touched key's holder before).
-  std::unordered_map<Certificate_key, int, Certificate_key_hash> before;
+  kvd::detail::Flat_map<Certificate_key, int, Certificate_key_hash> before;
   const auto touch = [&](const Certificate_key& key) -> std::vector<int>& {
     auto& h = holders_[key];
-    before.try_emplace(key, h.empty() ? -1 : h.front());
+    if (const auto [old, fresh] = before.try_emplace(key); fresh) *old = h.empty() ? -1 : h.front();
     return h;
   };
   for (int slot : not_kept_slots)
@@ -170,7 +169,9 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   records_.resize(t.nodes.size());
   remake_ = false;
   // 4. What changed in force: a key whose holder is new or rewritten; by key.
-  std::vector<std::pair<Certificate_key, int>> touched(before.begin(), before.end());
+  std::vector<std::pair<Certificate_key, int>> touched;
+  touched.reserve(before.size());
+  before.for_each([&](const Certificate_key& key, int old) { touched.emplace_back(key, old); });
   std::ranges::sort(touched);
   Changes out;
   for (const auto& [key, old] : touched) {
