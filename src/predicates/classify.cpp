@@ -97,11 +97,9 @@ template <class K>
 const typename Classifier<K>::Deciding& Classifier<K>::deciding(const symbolic::Symbolic_vertex& v,
                                                                 const symbolic::Symbolic_plane& p) const {
   const Pair key{v, p};
-  if (const Deciding* d = deciding_.find(key)) return *d;
-  Deciding d = decide(v, p);  // before the insertion, which may move the table's entries
-  Deciding& slot = deciding_[key];
-  slot = std::move(d);
-  return slot;
+  if (const auto* d = deciding_.find(key)) return **d;
+  auto d = std::make_unique<Deciding>(decide(v, p));
+  return *(deciding_[key] = std::move(d));
 }
 
 template <class K>

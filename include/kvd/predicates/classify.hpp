@@ -121,9 +121,9 @@ private:
   using Pair = std::pair<symbolic::Symbolic_vertex, symbolic::Symbolic_plane>;
   mutable std::unordered_map<symbolic::Symbolic_plane, Plane4<typename K::Poly>, symbolic::Symbolic_hash> planes_;
   mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> points_;
-  // Flat (kvd::detail::Flat_map): a reference into it lasts until the next
-  // insertion, so no caller holds one across a deciding() call.
-  mutable kvd::detail::Flat_map<Pair, Deciding, symbolic::Symbolic_hash> deciding_;
+  // Flat, the values held apart: a slot is a cache line, the table about as
+  // large as a node-based one, and a Deciding stays in place.
+  mutable kvd::detail::Flat_map<Pair, std::unique_ptr<Deciding>, symbolic::Symbolic_hash> deciding_;
   mutable std::unordered_map<Pair, std::vector<typename K::Poly>, symbolic::Symbolic_hash> certificates_;
   mutable std::unordered_map<std::pair<std::size_t, std::size_t>, typename K::Poly, symbolic::Symbolic_hash> edge_lines_;
   mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> positions_;
