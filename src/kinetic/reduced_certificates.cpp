@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "kvd/geometry/plucker.hpp"
 #include "kvd/detail/kernel/instantiate.hpp"
@@ -52,9 +53,12 @@ public:
       if (c.kernel().filtered()) filter_ = std::make_unique<Wall_filter>(now);
   }
 
-  std::vector<Certificate<P>> of_node(int n, const std::vector<int>& path) {
+  std::vector<Certificate<P>> of_node(int n, const std::vector<int>& path, std::vector<Certificate<P>>* held,
+                                      const std::set<Certificate_key>& failed) {
     at_ = n;
     path_ = &path;
+    held_ = held;
+    failed_ = &failed;
     visit(n);
     std::vector<Certificate<P>> out;
     for (auto& [key, cert] : made_) out.push_back(std::move(cert));
@@ -150,7 +154,7 @@ private:
   void edge_edge(const SV& s) {
     const SP against{SP::Kind::E, s.ids[1]};
     const Certificate_key key{Certificate_type::ET, s, against};
-    if (made_.contains(key)) return;
+    if (made_.contains(key) || take(key)) return;
     const P& lines = c_.edge_lines(s.ids[0], s.ids[1]);
     add(key, lines.is_zero() ? c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()}) : lines, {s},
         {SP{SP::Kind::E, s.ids[0]}, against});
@@ -300,12 +304,22 @@ private:
   void emit(const Spec& s) {
     if (s.plane) {
       const Certificate_key key{s.type, s.vertex, *s.plane};
-      if (!made_.contains(key)) add(key, c_.value(s.vertex, *s.plane), {s.vertex}, {*s.plane});
+      if (!made_.contains(key) && !take(key)) add(key, c_.value(s.vertex, *s.plane), {s.vertex}, {*s.plane});
       return;
     }
     // II (thesis 6.3.7): two intersection points at the same height.
     const Certificate_key key{s.type, s.vertex, s.other};
-    if (!made_.contains(key)) add(key, dot(p_cut(s.other), c_.position(s.vertex)), {s.vertex, s.other}, {});
+    if (!made_.contains(key) && !take(key))
+      add(key, dot(p_cut(s.other), c_.position(s.vertex)), {s.vertex, s.other}, {});
+  }
+
+  // Moves the certificate under `key` from `held_`, if there and not failed.
+  bool take(const Certificate_key& key) {
+    if (!held_) return false;
+    const auto it = std::ranges::lower_bound(*held_, key, {}, &Certificate<P>::key);
+    if (it == held_->end() || it->key != key || it->polys.empty() || failed_->contains(key)) return false;
+    made_.emplace(key, std::move(*it));
+    return true;
   }
 
   void add(const Certificate_key& key, const P& q, std::vector<SV> vertices, std::vector<SP> planes) {
@@ -321,6 +335,8 @@ private:
   const Point4<P> y_;  // the direction along which P-cuts are stacked
   const std::vector<int>* path_ = nullptr;  // the ancestors of the node visited, root first
   int at_ = -1;                             // the node visited
+  std::vector<Certificate<P>>* held_ = nullptr;         // certificates to take rather than make
+  const std::set<Certificate_key>* failed_ = nullptr;  // keys never taken from held_
   std::map<Certificate_key, Certificate<P>> made_;
   std::unique_ptr<Wall_filter> filter_;  // the exact kernel's, when its filter is on
 };
@@ -331,8 +347,10 @@ Reduced_maker<K>::Reduced_maker(const predicates::Classifier<K>& c, const tree::
 template <class K>
 Reduced_maker<K>::~Reduced_maker() = default;
 template <class K>
-std::vector<Certificate<typename K::Poly>> Reduced_maker<K>::of_node(int n, const std::vector<int>& path) {
-  return impl_->of_node(n, path);
+std::vector<Certificate<typename K::Poly>> Reduced_maker<K>::of_node(int n, const std::vector<int>& path,
+                                                                   std::vector<Certificate<typename K::Poly>>* held,
+                                                                   const std::set<Certificate_key>& failed) {
+  return impl_->of_node(n, path, held, failed);
 }
 
 #define KVD_INSTANTIATE_REDUCED_MAKER(K) template class Reduced_maker<K>;

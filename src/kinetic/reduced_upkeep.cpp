@@ -126,20 +126,29 @@ typename Reduced_upkeep<K>::Changes Reduced_upkeep<K>::update(const predicates::
   // (the rebuild renumbers every node) keeps that slot's certificates;
   // the other pending nodes make theirs. Records are written afterwards:
   // a slot may give its certificates to a node of another slot.
-  Reduced_maker<K> maker(c, t, now);
   std::vector<std::vector<Certificate<Poly>>> certs(pending.size());
   std::vector<bool> made(pending.size());
   for (std::size_t p = 0; p < pending.size(); ++p) {
     const int* old = where_.find(pending[p].key);
     const auto from = old ? static_cast<std::size_t>(*old) : records_.size();
-    if (!remake_ && from < records_.size() && not_kept_[from] && !holds_failed(from) && given_.set(from)) {
+    if (!remake_ && from < records_.size() && not_kept_[from] && !holds_failed(from) && given_.set(from))
       certs[p] = std::move(records_[from].certificates);
-    } else {
+    else
       made[p] = true;
-      certs[p] = maker.of_node(pending[p].node, pending[p].ancestors);
-      ++work.nodes;
-      work.certificates += certs[p].size();
-    }
+  }
+  // A node that makes its certificates takes, from the record its slot held
+  // and did not give, those under a key that did not fail: a certificate's
+  // polynomials are its key's, and positive just after now unless it
+  // failed. (Not in the reference, which makes everything again.)
+  Reduced_maker<K> maker(c, t, now);
+  for (std::size_t p = 0; p < pending.size(); ++p) {
+    if (!made[p]) continue;
+    const auto slot = static_cast<std::size_t>(pending[p].node);
+    std::vector<Certificate<Poly>>* held =
+        !remake_ && slot < records_.size() && !given_[slot] ? &records_[slot].certificates : nullptr;
+    certs[p] = maker.of_node(pending[p].node, pending[p].ancestors, held, failed);
+    ++work.nodes;
+    work.certificates += certs[p].size();
   }
   // 3. The records of the tree just after.
   for (int slot : not_kept_slots) {

@@ -44,13 +44,17 @@ std::vector<symbolic::Symbolic_vertex> intersection_walls(const tree::Node& n);
 bool names_walls(const tree::Node& n);
 
 // The reduced certificates one node makes at `now`, its ancestors being
-// `path` (root first); each named once, by key.
+// `path` (root first); each named once, by key. A certificate whose key is
+// in `held` (sorted by key) and not in `failed` is moved from there rather
+// than made.
 template <class K>
 class Reduced_maker {
 public:
   Reduced_maker(const predicates::Classifier<K>& c, const tree::Kvd_tree& t, const typename K::Time& now);
   ~Reduced_maker();
-  std::vector<Certificate<typename K::Poly>> of_node(int n, const std::vector<int>& path);
+  std::vector<Certificate<typename K::Poly>> of_node(int n, const std::vector<int>& path,
+                                                     std::vector<Certificate<typename K::Poly>>* held = nullptr,
+                                                     const std::set<Certificate_key>& failed = {});
 
 private:
   class Impl;
