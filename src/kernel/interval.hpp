@@ -35,7 +35,7 @@ namespace bi = boost::numeric::interval_lib;
 // alone, and a result has no excess precision to strip. Boost's C99 control
 // goes through fesetround, which also writes the x87 control word, and
 // stores every result to a volatile; this one sets MXCSR, and only when it
-// changes (a scope inside a scope costs a read).
+// changes (a scope inside a scope reads MXCSR and writes nothing).
 struct Rounding_control {
   using rounding_mode = unsigned int;
   static constexpr unsigned int mask = 0x6000;  // MXCSR's rounding-control bits

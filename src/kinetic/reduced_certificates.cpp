@@ -154,7 +154,7 @@ private:
   void edge_edge(const SV& s) {
     const SP against{SP::Kind::E, s.ids[1]};
     const Certificate_key key{Certificate_type::ET, s, against};
-    if (made_.contains(key) || take(key)) return;
+    if (known(key)) return;
     const P& lines = c_.edge_lines(s.ids[0], s.ids[1]);
     add(key, lines.is_zero() ? c_.value(s, SP{SP::Kind::T, s_.edge_triangles[s.ids[1]].front()}) : lines, {s},
         {SP{SP::Kind::E, s.ids[0]}, against});
@@ -304,17 +304,18 @@ private:
   void emit(const Spec& s) {
     if (s.plane) {
       const Certificate_key key{s.type, s.vertex, *s.plane};
-      if (!made_.contains(key) && !take(key)) add(key, c_.value(s.vertex, *s.plane), {s.vertex}, {*s.plane});
+      if (!known(key)) add(key, c_.value(s.vertex, *s.plane), {s.vertex}, {*s.plane});
       return;
     }
     // II (thesis 6.3.7): two intersection points at the same height.
     const Certificate_key key{s.type, s.vertex, s.other};
-    if (!made_.contains(key) && !take(key))
-      add(key, dot(p_cut(s.other), c_.position(s.vertex)), {s.vertex, s.other}, {});
+    if (!known(key)) add(key, dot(p_cut(s.other), c_.position(s.vertex)), {s.vertex, s.other}, {});
   }
 
-  // Moves the certificate under `key` from `held_`, if there and not failed.
-  bool take(const Certificate_key& key) {
+  // Whether the node has its certificate under `key` already: made, or now
+  // moved from `held_`, where a key that did not fail is taken.
+  bool known(const Certificate_key& key) {
+    if (made_.contains(key)) return true;
     if (!held_) return false;
     const auto it = std::ranges::lower_bound(*held_, key, {}, &Certificate<P>::key);
     if (it == held_->end() || it->key != key || it->polys.empty() || failed_->contains(key)) return false;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../kernel/interval.hpp"
+#include "kvd/detail/flat_map.hpp"
 #include "kvd/detail/geometry/plucker_impl.hpp"
 #include "kvd/detail/symbolic/scene_geometry_impl.hpp"
 
@@ -136,9 +137,7 @@ struct Classification_filter::State {
   }
   const Point4<Interval>& point(const symbolic::Symbolic_vertex& v) {
     if (v.kind == symbolic::Symbolic_vertex::Kind::endpoint) return positions->vertex(v.ids[0]);
-    // Fibonacci hashing: the slot from the high bits of the product.
-    const std::size_t slot = (symbolic::Symbolic_hash()(v) * 0x9e3779b97f4a7c15ull) >> (64 - cache_bits);
-    Cached_point& c = points[slot];
+    Cached_point& c = points[kvd::detail::fibonacci_slot(symbolic::Symbolic_hash()(v), cache_bits)];
     if (c.stamp != epoch || c.v != v) c = {epoch, v, positions->point(v)};
     return c.at;
   }

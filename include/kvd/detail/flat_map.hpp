@@ -20,6 +20,12 @@
 
 namespace kvd::detail {
 
+// Fibonacci hashing: a slot among 2^bits from the high bits of the product
+// of h with 2^64 / φ, so that a hash weak in its low bits still spreads.
+inline std::size_t fibonacci_slot(std::uint64_t h, int bits) {
+  return static_cast<std::size_t>((h * 0x9e3779b97f4a7c15ull) >> (64 - bits));
+}
+
 template <class Key, class Value, class Hash>
 class Flat_map {
 public:
@@ -72,11 +78,7 @@ private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   static std::uint64_t tag(const Key& key) { return static_cast<std::uint64_t>(Hash()(key)) | 1u; }
   std::size_t mask() const { return slots_.size() - 1; }
-  // Fibonacci hashing: the high bits of the product pick the home slot, so a
-  // hash that is weak in its low bits still spreads.
-  std::size_t home(std::uint64_t h) const {
-    return static_cast<std::size_t>((h * 0x9e3779b97f4a7c15ull) >> (64 - std::countr_zero(slots_.size())));
-  }
+  std::size_t home(std::uint64_t h) const { return fibonacci_slot(h, std::countr_zero(slots_.size())); }
   std::size_t next(std::size_t i) const { return (i + 1) & mask(); }
   // How far the element in slot i lies from its home.
   std::size_t distance(std::size_t i) const { return (i - home(slots_[i].tag)) & mask(); }

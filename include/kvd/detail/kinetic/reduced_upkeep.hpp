@@ -9,8 +9,9 @@
 // tree before the batch, and which holds no certificate that failed in the
 // batch, keeps the certificates it had. The others make theirs at the new
 // instant, taking from the record their slot held those under a key that
-// did not fail (a certificate's polynomials are its key's). Keys are compared exactly (no hashing), so a node's key is equal
-// only when the inputs are.
+// did not fail (a certificate's polynomials are its key's). Keys are
+// compared exactly (no hashing), so a node's key is equal only when the
+// inputs are.
 //
 // The walls a node's certificates name were the nearest when the node made
 // them; a node that keeps its certificates keeps that choice
