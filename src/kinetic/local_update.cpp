@@ -8,6 +8,7 @@
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/detail/kinetic/recut.hpp"
 #include "kvd/detail/tree/operations.hpp"
 
 namespace kvd::kinetic {
@@ -68,37 +69,33 @@ void sites_of(const scene::Scene& s, const SP& p, Sites& out) {
 
 // The nodes_changed of Update_cost, from the journal's saved nodes (those
 // that held a node before) and the live changed nodes after, by content (as
-// canonical_text would write it): the slots whose content after is new or
-// whose content before is gone. Contents are distinct within a tree (pieces
-// of one site are disjoint).
-std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& journal, std::vector<int> changed) {
-  using Held = std::pair<tree::Node_content, int>;
+// canonical_text would write it): the larger of the number of contents
+// after that no node had before and the number of contents before that no
+// node has after. Each node an update writes can take one content away and
+// bring one, so no update of the same trees writes fewer nodes; and the
+// count depends on the two trees alone (untouched nodes are the same in
+// both; contents are distinct within a tree, pieces of one site being
+// disjoint), not on how the update reused slots.
+std::size_t nodes_changed(const tree::Kvd_tree& t, const tree::Tree_journal& journal, const std::vector<int>& changed) {
   const auto sorted = [](std::vector<int> v) {
     std::ranges::sort(v);
     return v;
   };
   const std::vector<int> free_before = sorted(journal.free_at_start()), free_after = sorted(t.free_nodes);
-  std::vector<Held> before, after;
+  std::vector<tree::Node_content> before, after;
   for (const auto& [n, node] : journal.saved())
-    if (!std::ranges::binary_search(free_before, n)) before.emplace_back(tree::content(node), n);
-  std::ranges::sort(changed);
-  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-  for (int n : changed)  // a changed slot past the end was released and dropped
+    if (!std::ranges::binary_search(free_before, n)) before.push_back(tree::content(node));
+  for (int n : changed)  // distinct; a changed slot past the end was released and dropped
     if (static_cast<std::size_t>(n) < t.nodes.size() && !std::ranges::binary_search(free_after, n))
-      after.emplace_back(tree::content(t.nodes[static_cast<std::size_t>(n)]), n);
+      after.push_back(tree::content(t.nodes[static_cast<std::size_t>(n)]));
   std::ranges::sort(before);
   std::ranges::sort(after);
-  const auto holds = [](const std::vector<Held>& in, const tree::Node_content& c) {
-    const auto it = std::ranges::lower_bound(in, c, {}, &Held::first);
-    return it != in.end() && it->first == c;
+  const auto only_in = [](const std::vector<tree::Node_content>& a, const std::vector<tree::Node_content>& b) {
+    std::size_t k = 0;
+    for (const auto& c : a) k += !std::ranges::binary_search(b, c);
+    return k;
   };
-  std::vector<int> slots;
-  for (const auto& [c, n] : after)
-    if (!holds(before, c)) slots.push_back(n);
-  for (const auto& [c, n] : before)
-    if (!holds(after, c)) slots.push_back(n);
-  std::ranges::sort(slots);
-  return static_cast<std::size_t>(std::unique(slots.begin(), slots.end()) - slots.begin());
+  return std::max(only_in(after, before), only_in(before, after));
 }
 
 // How a failure's changed signs are confined (proofs/local_update.md,
@@ -253,7 +250,7 @@ int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tre
 
 template <class K>
 Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
-                         const std::set<SP>& moving, int scope, tree::Tree_journal* journal) {
+                         const std::set<SP>& moving, int scope, tree::Tree_journal* journal, Edit way) {
   const scene::Scene& s = split.classifier().motion().scene();
   const bool asked = scope >= 0;
   // Each moving site's piece inside the scope's cell, before any edit (the
@@ -281,55 +278,18 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   }
   if (scope < 0)
     for (const SP& site : moving) pieces.emplace_back(site, tree::site_fragment(s, site));
-  // The nodes of moving sites in the scope, with where each hangs.
-  struct Held {
-    std::size_t priority;
-    int node, parent;
-    bool right;
-  };
-  std::vector<Held> held;
-  for (const SP& site : moving) {
-    const std::size_t priority = tree::cut_priority(s, site);
-    for (int n : links.holding(site)) {
-      if (scope >= 0 && !ancestor_or_self(links, scope, n)) continue;
-      const int parent = links.parent(n);
-      held.push_back({priority, n, parent, parent >= 0 && t.nodes[static_cast<std::size_t>(parent)].right == n});
-    }
-  }
-  // Lowest priority first: a node's parent is never dragged before it.
-  // Pieces of one site lie in disjoint subtrees; slots order them.
-  std::sort(held.begin(), held.end(),
-            [](const Held& a, const Held& b) { return std::tie(b.priority, a.node) < std::tie(a.priority, b.node); });
-  // The place the scope's subtree hangs from, kept through the drags (its
-  // parent is outside the scope).
-  const int above = scope >= 0 ? links.parent(scope) : -1;
-  const bool on_right = above >= 0 && t.nodes[static_cast<std::size_t>(above)].right == scope;
-  std::vector<int> changed;
-  const auto hang = [&](int parent, bool right, int sub) {
-    if (parent < 0) {
-      t.root = sub;
-      return;
-    }
-    int& child = right ? t.nodes[static_cast<std::size_t>(parent)].right : t.nodes[static_cast<std::size_t>(parent)].left;
-    if (child == sub) return;
-    if (journal) journal->save(parent);
-    child = sub;
-    changed.push_back(parent);
-  };
-  tree::Tree_editor<K> editor(t, split, journal);
-  for (const Held& h : held) hang(h.parent, h.right, editor.drag(h.node));
-  // Highest priority first, at the scope's place (the root for the whole tree).
-  const auto hung = [&] {
-    if (above < 0) return t.root;
-    const tree::Node& p = t.nodes[static_cast<std::size_t>(above)];
-    return on_right ? p.right : p.left;
-  };
   std::ranges::sort(pieces, {}, [&](const auto& p) { return tree::cut_priority(s, p.first); });
-  for (auto& [site, piece] : pieces) hang(above, on_right, editor.insert(hung(), site, std::move(piece)));
-  const std::vector<int> touched = editor.touched_nodes();
-  changed.insert(changed.end(), touched.begin(), touched.end());
+  // The scope's place (the root for the whole tree); its parent is outside
+  // the scope and keeps its cut.
+  const int above = scope >= 0 ? links.parent(scope) : -1;
+  const typename Site_edit<K>::Place at{above, above >= 0 && t.nodes[static_cast<std::size_t>(above)].right == scope};
+  Site_edit<K> edit(t, links, split, moving, journal);
+  if (way == Edit::recut) edit.recut(at, std::move(pieces));
+  else edit.reinsert(at, std::move(pieces));
+  std::vector<int> changed = edit.changed();
   const std::size_t differ = journal ? nodes_changed(t, *journal, changed) : 0;
-  return {moving.size(), touched.size(), differ, std::move(changed), asked && scope < 0};
+  const std::size_t touched = changed.size();
+  return {moving.size(), touched, differ, std::move(changed), asked && scope < 0};
 }
 
 #define KVD_INSTANTIATE_LOCAL_UPDATE(K)                                                                      \
@@ -339,7 +299,7 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
                                      const std::vector<const Certificate<K::Poly>*>&);                     \
   template Update_cost local_update<K>(tree::Kvd_tree&, const tree::Tree_links&,                          \
                                        const tree::Fragment_splitter<K>&, const std::set<SP>&, int,        \
-                                       tree::Tree_journal*);
+                                       tree::Tree_journal*, Edit);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_LOCAL_UPDATE)
 
 }  // namespace kvd::kinetic

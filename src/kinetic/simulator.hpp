@@ -259,7 +259,8 @@ private:
     }
     const int scope = o_.update == Update::local ? update_scope(scene_, links_, current_, failing) : -1;
     if (validator_.keeps_last()) before_ = current_;  // the update edits the tree in force
-    auto updated = builder_.update(current_, links_, at, moving, scope);
+    auto updated = builder_.update(current_, links_, at, moving, scope,
+                                   o_.update == Update::local ? Edit::recut : Edit::reinsert);
     if (Update_cost* cost = std::get_if<Update_cost>(&updated)) {
       batch.moving_sites = cost->sites;
       batch.scope = cost->widened ? Update_scope::widened : scope >= 0 ? Update_scope::subtree : Update_scope::whole;

@@ -176,6 +176,12 @@ int Tree_editor<K>::drag(int n) {
   return merge(l, r, cut);
 }
 
+template <class K>
+void Tree_editor<K>::refit(int n, Fragment f) {
+  edit(n).fragment = std::move(f);
+  touched_.push_back(n);
+}
+
 // The union of two pieces of one site split by `between`. Edge pieces share
 // the crossing vertex. Triangle pieces share their side on the cut line;
 // the union walks a's corners from the end of that side round to its start,

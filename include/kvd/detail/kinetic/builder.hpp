@@ -63,7 +63,8 @@ public:
   const tree::Evaluated& evaluated() const { return evaluated_; }
 
   // `t` made, in place, the tree just after `at` by the local update moving
-  // `moving` within `scope` (`links` being t's; local_update), with its cost; or the meeting that stops it, `t` then left
+  // `moving` within `scope`, edited the `way` given (`links` being t's;
+  // local_update), with its cost; or the meeting that stops it, `t` then left
   // exactly as it was (the update's edits are journalled and undone, as
   // they are for any exception that goes on). In a
   // floating-point kernel rounding can also leave pieces that no longer
@@ -71,10 +72,11 @@ public:
   // no object, which the caller repairs by a build; exact arithmetic
   // cannot, so there it is a bug and the exception goes on.
   std::variant<Update_cost, Meeting> update(tree::Kvd_tree& t, const tree::Tree_links& links, const Time& at,
-                                            const std::set<symbolic::Symbolic_plane>& moving, int scope) const {
+                                            const std::set<symbolic::Symbolic_plane>& moving, int scope,
+                                            Edit way) const {
     tree::Tree_journal journal(t);
     try {
-      return local_update(t, links, tree::Fragment_splitter<K>(*c_, at), moving, scope, &journal);
+      return local_update(t, links, tree::Fragment_splitter<K>(*c_, at), moving, scope, &journal, way);
     } catch (const tree::Build_error& e) {
       journal.undo();
       return meeting(e);

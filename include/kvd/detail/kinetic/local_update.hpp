@@ -52,15 +52,15 @@ std::set<symbolic::Symbolic_plane> moving_sites(const scene::Scene& s, const tre
 
 struct Update_cost {
   std::size_t sites = 0;          // moving sites
-  std::size_t nodes_touched = 0;  // distinct nodes re-cut, relinked, created or removed (Tree_editor::touched)
-  // Of the nodes touched, those whose cut and fragment after the update no
-  // node had before, or whose cut and fragment before no node has after:
-  // what the event changed. A piece dragged out and inserted again as it
-  // was, or a node only relinked, is touched, not changed. Counted with a
-  // journal only.
+  std::size_t nodes_touched = 0;  // distinct nodes re-cut, relinked, created or removed
+  // What the event changed: the larger of the number of cuts and fragments
+  // after the update that no node had before and the number before that no
+  // node has after, the fewest nodes any update between the two trees must
+  // write. A piece dragged out and inserted again as it was, or a node only
+  // relinked, is touched, not changed. Counted with a journal only.
   std::size_t nodes_changed = 0;
-  // Those nodes, with the parents given a new child in place of a dragged
-  // node or of the confined subtree's old root: what the structure hash and
+  // The nodes touched, with the parents given a new child in place of a
+  // dragged node or of the confined subtree's old root: what the structure hash and
   // the links must see again (Subtree_hashes::update, Tree_links::update).
   std::vector<int> changed;
   bool widened = false;  // a scope was asked for and the whole tree taken
@@ -77,22 +77,27 @@ template <class Poly>
 int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
                  const std::vector<const Certificate<Poly>*>& failing);
 
+// How the update edits the tree (recut.hpp): `recut` walks down from the
+// scope and makes again only the subtrees where a moving site's piece or
+// plane changed sides (`--update local`); `reinsert` drags every node of a
+// moving site in the scope and inserts the sites again (`--update
+// reinsert`, the reference, with the scope the whole tree).
+enum class Edit { recut, reinsert };
+
 // `links` are t's: they find the nodes of the moving sites without a walk
 // of the tree. With a journal, every node is saved there before its first
 // change, so that a failed update can be undone.
 //
-// With `scope` a node, only the nodes of moving sites in its subtree are
-// dragged, and each moving site is inserted again with its piece inside the
-// scope's cell, at the scope's place (`--update local`). When a sign above
-// the scope shows as changed (a moving site meeting the cell of an ancestor
-// of lower or equal priority, or meeting the scope's cell now but holding no
-// node in it before, or the reverse), the update takes the whole tree
-// instead (Update_cost::widened). With `scope` -1 every node of a moving
-// site is dragged and every site inserted from the root (`--update
-// reinsert`).
+// With `scope` a node, the update stays in its subtree: each moving site is
+// taken with its piece inside the scope's cell. When a sign above the scope
+// shows as changed (a moving site meeting the cell of an ancestor of lower
+// or equal priority, or meeting the scope's cell now but holding no node in
+// it before, or the reverse), the update takes the whole tree instead
+// (Update_cost::widened). With `scope` -1 it takes the whole tree, each
+// site with its whole fragment.
 template <class K>
 Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const tree::Fragment_splitter<K>& split,
                          const std::set<symbolic::Symbolic_plane>& moving, int scope = -1,
-                         tree::Tree_journal* journal = nullptr);
+                         tree::Tree_journal* journal = nullptr, Edit way = Edit::reinsert);
 
 }  // namespace kvd::kinetic

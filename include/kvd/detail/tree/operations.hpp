@@ -14,8 +14,9 @@
 //    Fig. 7.5; its MERGE effects are drags of incident nodes, its SPLIT
 //    effects their reinsertion, see kinetic/local_update.hpp).
 // Removed nodes are recycled. `touched` counts the distinct nodes the
-// operations created, re-cut (a new fragment), relinked (new children) or
-// removed; nodes only descended through are not counted.
+// operations created, re-cut (a new fragment, by split, join or refit),
+// relinked (new children) or removed; nodes only descended through are not
+// counted.
 #pragma once
 
 #include <cstddef>
@@ -56,10 +57,11 @@ public:
   int insert(int t, Symbolic_plane cut, Fragment f);
   // Subtree n without node n.
   int drag(int n);
+  // Node n given f, a new piece of its own site in the same cell.
+  void refit(int n, Fragment f);
 
-  // The distinct nodes touched, increasing; touched() counts them.
+  // The distinct nodes touched, increasing.
   std::vector<int> touched_nodes() const;
-  std::size_t touched() const { return touched_nodes().size(); }
 
 private:
   Node& node(int i) { return t_.nodes[static_cast<std::size_t>(i)]; }
