@@ -63,8 +63,9 @@ Update_costs update_costs(const kinetic::Simulation<Time>& sim) {
   return u;
 }
 
-// Nodes touched per batch by the local update (thesis 7.3), and of those the
-// nodes whose cut or fragment changed: their ratio measures locality. Over
+// Nodes touched per batch by the local update (thesis 7.3), and the nodes
+// the batch changed (Update_cost::nodes_changed): their ratio measures
+// locality. Over
 // the batches the local update made.
 struct Touched {
   double median = 0;

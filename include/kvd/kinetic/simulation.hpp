@@ -77,7 +77,7 @@ struct Batch {
   std::size_t moving_sites = 0;   // --update local: the sites the batch moved
   Update_scope scope = Update_scope::none;
   std::size_t nodes_touched = 0;  // --update local: the nodes the update touched
-  std::size_t nodes_changed = 0;  // --update local: of those, the nodes whose cut or fragment changed
+  std::size_t nodes_changed = 0;  // --update local: the cuts and fragments made or removed (the larger count)
   std::size_t nodes_recomputed = 0;         // nodes that made their certificates again (all, with the full set)
   std::size_t certificates_recomputed = 0;  // the certificates they made
   double tree_seconds = 0;         // updating the tree

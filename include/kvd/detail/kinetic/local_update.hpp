@@ -12,16 +12,19 @@
 // node hangs below a node of those sites. A batch moves the union of its
 // events' sites.
 //
-// The update drags the nodes of the moving sites, lowest priority first, so
-// each drag merges subtrees that hold no moving site (the thesis's MERGE
-// effects), then inserts the moving sites again in priority order, out of
-// order where they meet lower-priority nodes (the thesis's SPLIT effects:
-// the pieces land wherever the sites now are). The part of the tree that
-// holds no moving site is the tree of the other sites, which no failing sign
-// involves, so it is unchanged by the batch; the insertions then give the
-// tree just after it, whatever order the batch's events would be taken in
-// (proofs/local_update.md, sections 3 and 4). Where the batch's failing
-// signs all lie in one subtree, the update is confined to it (section 5).
+// The reference update drags the nodes of the moving sites, lowest
+// priority first, so each drag merges subtrees that hold no moving site
+// (the thesis's MERGE effects), then inserts the moving sites again in
+// priority order, out of order where they meet lower-priority nodes (the
+// thesis's SPLIT effects: the pieces land wherever the sites now are). The
+// part of the tree that holds no moving site is the tree of the other
+// sites, which no failing sign involves, so it is unchanged by the batch;
+// the insertions then give the tree just after it, whatever order the
+// batch's events would be taken in (proofs/local_update.md, sections 3 and
+// 4). Where the batch's failing signs all lie in one subtree, the update is
+// confined to it (section 5); and there it drags and inserts only where a
+// walk down from the subtree's root cannot keep a node (recut.hpp,
+// section 6).
 #pragma once
 
 #include <cstddef>
