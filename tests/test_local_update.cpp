@@ -734,6 +734,21 @@ TEST_CASE("dragging with merging and splitting effects (thesis Fig. 7.4): a vert
   REQUIRE(b.time.is_rational());
   CHECK(b.time.rational() == test::q(6516838, 2848615));
   const Figure f = figure(s, kinetic::rational_between(sim.batches[0].time, b.time), b.time.rational());
+  // The update is confined to P(1)'s subtree, and touches only what the
+  // figure changes: six nodes made (on the old side e5's piece now ending
+  // at P(1) and the joined piece of T(1); on the new side e5's and T(1)'s
+  // pieces beside v5, e4 from v4 to v5 and T(1) beyond it), P(5)'s node
+  // moved, and four nodes given new children (E(1), whose left child is
+  // E(3) once P(5) and e4's piece are gone; P(4), over P(5) now; and the
+  // pieces of e3 on both sides).
+  REQUIRE(f.scope >= 0);
+  CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::P, 1});
+  CHECK(f.changed == 6);
+  CHECK(f.made == 6);
+  CHECK(f.moved == 1);
+  CHECK(f.relinked == 4);
+  CHECK(f.removed == 0);
+  CHECK(f.touched == 11);
   CHECK(below(f.before, SP{SP::Kind::E, 1}) == R"(E(1) [SV(v1) SV(v2) SE(e1)]
   - P(5) [SV(v5)]
     - E(3) [SV(e3,P2) SV(e3,E1) SE(e3)]
