@@ -8,7 +8,7 @@
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
-#include "kvd/detail/kinetic/recut.hpp"
+#include "kvd/detail/kinetic/site_edit.hpp"
 #include "kvd/detail/tree/operations.hpp"
 
 namespace kvd::kinetic {

@@ -23,7 +23,7 @@
 // batch's events would be taken in (proofs/local_update.md, sections 3 and
 // 4). Where the batch's failing signs all lie in one subtree, the update is
 // confined to it (section 5); and there it drags and inserts only where a
-// walk down from the subtree's root cannot keep a node (recut.hpp,
+// walk down from the subtree's root cannot keep a node (site_edit.hpp,
 // section 6).
 #pragma once
 
@@ -80,7 +80,7 @@ template <class Poly>
 int update_scope(const scene::Scene& s, const tree::Tree_links& links, const tree::Kvd_tree& t,
                  const std::vector<const Certificate<Poly>*>& failing);
 
-// How the update edits the tree (recut.hpp): `recut` walks down from the
+// How the update edits the tree (site_edit.hpp): `recut` walks down from the
 // scope and makes again only the subtrees where a moving site's piece or
 // plane changed sides (`--update local`); `reinsert` drags every node of a
 // moving site in the scope and inserts the sites again (`--update

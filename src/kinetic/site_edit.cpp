@@ -1,4 +1,4 @@
-#include "kvd/detail/kinetic/recut.hpp"
+#include "kvd/detail/kinetic/site_edit.hpp"
 
 #include <algorithm>
 #include <tuple>
