@@ -39,6 +39,17 @@ std::pair<tree::Kvd_tree, std::size_t> moved(const predicates::Classifier<K>& c,
   return {std::move(t), cost.nodes_touched};
 }
 
+// Whether a and b are the same node array, root and free slots, node for
+// node.
+bool identical(const tree::Kvd_tree& a, const tree::Kvd_tree& b) {
+  if (a.nodes.size() != b.nodes.size() || a.root != b.root || a.free_nodes != b.free_nodes) return false;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    const tree::Node &x = a.nodes[i], &y = b.nodes[i];
+    if (!(x.cut == y.cut && x.fragment == y.fragment && x.left == y.left && x.right == y.right)) return false;
+  }
+  return true;
+}
+
 // A thesis figure on a hand-built scene: the tree at `from`, and the local
 // update of the batch failing at `at` (the certificates in force at `from`
 // failing then), confined as a run confines it, which must give the tree a
@@ -82,8 +93,29 @@ Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at,
   // The reference edit on a copy: the same tree.
   tree::Kvd_tree reinserted = f.after;
   kinetic::local_update(reinserted, links, split, moving, f.scope, nullptr, kinetic::Edit::reinsert);
+  {  // The journal undoes the walk's edits, node for node.
+    tree::Kvd_tree trial = f.after;
+    tree::Tree_journal journal(trial);
+    kinetic::local_update(trial, links, split, moving, f.scope, &journal, kinetic::Edit::recut);
+    journal.undo();
+    CHECK(identical(trial, f.before));
+  }
   tree::Tree_journal journal(f.after);
   const auto cost = kinetic::local_update(f.after, links, split, moving, f.scope, &journal, kinetic::Edit::recut);
+  {  // The links and per-subtree hashes kept from its changed nodes are the tree's.
+    tree::Tree_links kept = links;
+    tree::Subtree_hashes hashes(f.before);
+    kept.update(f.after, cost.changed);
+    hashes.update(f.after, kept, cost.changed);
+    const tree::Tree_links fresh(f.after);
+    for (std::size_t i = 0; i < f.after.nodes.size(); ++i) {
+      const int n = static_cast<int>(i);
+      REQUIRE(kept.live(n) == fresh.live(n));
+      if (fresh.live(n)) CHECK(kept.parent(n) == fresh.parent(n));
+    }
+    for (const SP& site : tree::sites_in_priority_order(s)) CHECK(kept.holding(site) == fresh.holding(site));
+    CHECK(hashes.root() == tree::structure_hash(f.after));
+  }
   const auto live = [](const tree::Kvd_tree& t, int n) {
     return static_cast<std::size_t>(n) < t.nodes.size() && std::ranges::find(t.free_nodes, n) == t.free_nodes.end();
   };
@@ -198,15 +230,7 @@ TEMPLATE_TEST_CASE("the journal undoes a local update exactly, node for node", "
   // slots as before.
   on_built_scenes<TestType>([](const scene::Scene& s, const auto& c, const auto& at, tree::Kvd_tree t) {
     const tree::Kvd_tree before = t;
-    const auto same = [&] {
-      if (t.nodes.size() != before.nodes.size() || t.root != before.root || t.free_nodes != before.free_nodes)
-        return false;
-      for (std::size_t i = 0; i < t.nodes.size(); ++i) {
-        const tree::Node &a = t.nodes[i], &b = before.nodes[i];
-        if (!(a.cut == b.cut && a.fragment == b.fragment && a.left == b.left && a.right == b.right)) return false;
-      }
-      return true;
-    };
+    const auto same = [&] { return identical(t, before); };
     std::size_t edited = 0;
     for (const SP& site : tree::sites_in_priority_order(s)) {
       CAPTURE(symbolic::to_string(site));
@@ -296,7 +320,8 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
   // place: v4 now lies on its negative side, where the walk makes P(4)'s
   // node and the new pieces of e3, e4 and the mover; on the positive side
   // P(4)'s old subtree, under T(0), is made again without it. The update
-  // touches only what the figure changes: eight nodes made (the two new
+  // touches only what the figure changes (so does dragging and inserting
+  // again every moving node in E(1)'s subtree, E(1) being one): eight nodes made (the two new
   // pieces of e3, of e4 and of the mover beside P(4), and the joined pieces
   // of e3 with e5 and of the mover under P(5)), P(4)'s node moved, three
   // pieces removed (e4 and the mover's two under P(4)), and three nodes

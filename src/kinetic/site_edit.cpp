@@ -82,6 +82,9 @@ void Site_edit<K>::recut(Place at, Site_pieces pieces) {
   const int n = child(at);
   if (n < 0) return reinsert(at, std::move(pieces));
   // Nothing moving was here, and nothing moving comes: the subtree stays.
+  // (The marks are those of the tree before the update; the walk reads them
+  // only in subtrees it has not edited yet, whose slots still hold the
+  // nodes they held then.)
   if (!holds_[static_cast<std::size_t>(n)] && pieces.empty()) return;
   const SP cut = t_.nodes[static_cast<std::size_t>(n)].cut;
   // A moving site of higher priority now meets the cell: it goes above n.
