@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <set>
 #include <string>
+#include <vector>
 
 
 #include "kernels.hpp"
@@ -50,19 +52,41 @@ bool identical(const tree::Kvd_tree& a, const tree::Kvd_tree& b) {
   return true;
 }
 
+// Links and per-subtree hashes of t before an edit, updated from the nodes
+// it changed: they must equal those made afresh from t after it.
+void keep_up(const tree::Kvd_tree& t, tree::Tree_links& links, tree::Subtree_hashes& hashes,
+             const std::vector<int>& changed, const std::vector<SP>& sites) {
+  links.update(t, changed);
+  hashes.update(t, links, changed);
+  const tree::Tree_links fresh(t);
+  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+    const int n = static_cast<int>(i);
+    REQUIRE(links.live(n) == fresh.live(n));
+    if (fresh.live(n)) CHECK(links.parent(n) == fresh.parent(n));
+  }
+  for (const SP& site : sites) CHECK(links.holding(site) == fresh.holding(site));
+  CHECK(hashes.root() == tree::structure_hash(t));
+}
+
 // A thesis figure on a hand-built scene: the tree at `from`, and the local
 // update of the batch failing at `at` (the certificates in force at `from`
 // failing then), confined as a run confines it, which must give the tree a
 // build gives just after `at`: a different one, unless `changes` is false.
-// With the nodes it touched and, of those, the nodes it changed; and the
-// nodes touched sorted by what happened to them: a node made whose cut and
-// fragment no node had before, a node whose cut and fragment another slot
-// held before (moved), a node that kept its cut and fragment (relinked), a
-// node removed.
+// With the nodes it changed and touched, and the nodes touched sorted by
+// what happened to them: a node made whose cut and fragment no node had
+// before, a node whose cut and fragment another slot held before (moved), a
+// node that kept its cut and fragment (relinked), a node removed.
+struct Touched {
+  std::size_t changed = 0, touched = 0, made = 0, moved = 0, relinked = 0, removed = 0;
+  friend bool operator==(const Touched&, const Touched&) = default;
+  friend std::ostream& operator<<(std::ostream& out, const Touched& t) {
+    return out << "changed " << t.changed << ", touched " << t.touched << ": made " << t.made << ", moved " << t.moved
+               << ", relinked " << t.relinked << ", removed " << t.removed;
+  }
+};
 struct Figure {
   tree::Kvd_tree before, after;
-  std::size_t touched = 0, changed = 0;
-  std::size_t made = 0, moved = 0, relinked = 0, removed = 0;
+  Touched nodes{};
   int scope = -1;
   bool widened = false;
 };
@@ -105,16 +129,7 @@ Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at,
   {  // The links and per-subtree hashes kept from its changed nodes are the tree's.
     tree::Tree_links kept = links;
     tree::Subtree_hashes hashes(f.before);
-    kept.update(f.after, cost.changed);
-    hashes.update(f.after, kept, cost.changed);
-    const tree::Tree_links fresh(f.after);
-    for (std::size_t i = 0; i < f.after.nodes.size(); ++i) {
-      const int n = static_cast<int>(i);
-      REQUIRE(kept.live(n) == fresh.live(n));
-      if (fresh.live(n)) CHECK(kept.parent(n) == fresh.parent(n));
-    }
-    for (const SP& site : tree::sites_in_priority_order(s)) CHECK(kept.holding(site) == fresh.holding(site));
-    CHECK(hashes.root() == tree::structure_hash(f.after));
+    keep_up(f.after, kept, hashes, cost.changed, tree::sites_in_priority_order(s));
   }
   const auto live = [](const tree::Kvd_tree& t, int n) {
     return static_cast<std::size_t>(n) < t.nodes.size() && std::ranges::find(t.free_nodes, n) == t.free_nodes.end();
@@ -124,14 +139,14 @@ Figure figure(const scene::Scene& s, const mpq_class& from, const mpq_class& at,
     if (live(f.before, static_cast<int>(n))) held.emplace(tree::content(f.before.nodes[n]), static_cast<int>(n));
   for (int n : cost.changed) {
     if (!live(f.after, n)) {
-      ++f.removed;
+      ++f.nodes.removed;
       continue;
     }
     const auto it = held.find(tree::content(f.after.nodes[static_cast<std::size_t>(n)]));
-    ++(it == held.end() ? f.made : it->second == n ? f.relinked : f.moved);
+    ++(it == held.end() ? f.nodes.made : it->second == n ? f.nodes.relinked : f.nodes.moved);
   }
-  f.touched = cost.nodes_touched;
-  f.changed = cost.nodes_changed;
+  f.nodes.touched = cost.nodes_touched;
+  f.nodes.changed = cost.nodes_changed;
   f.widened = cost.widened;
   CHECK(f.widened == scope.has_value());
   CHECK(!tree::first_difference(f.after, tree::build(c, Exact_time(at))));
@@ -260,16 +275,7 @@ TEMPLATE_TEST_CASE("links and hashes kept from the changed nodes are the tree's 
     for (const SP& site : sites) {
       CAPTURE(symbolic::to_string(site));
       const auto cost = kinetic::local_update(t, links, tree::Fragment_splitter<TestType>(c, at), kinetic::sites_with(s, site));
-      links.update(t, cost.changed);
-      hashes.update(t, links, cost.changed);
-      const tree::Tree_links fresh(t);
-      for (std::size_t i = 0; i < t.nodes.size(); ++i) {
-        const int n = static_cast<int>(i);
-        REQUIRE(links.live(n) == fresh.live(n));
-        if (fresh.live(n)) CHECK(links.parent(n) == fresh.parent(n));
-      }
-      for (const SP& other : sites) CHECK(links.holding(other) == fresh.holding(other));
-      CHECK(hashes.root() == tree::structure_hash(t));
+      keep_up(t, links, hashes, cost.changed, sites);
       released += t.free_nodes.size();
     }
   });
@@ -328,12 +334,7 @@ TEST_CASE("VE update of thesis Fig. 7.7: a vertex crossing the E-plane of an anc
   // given new children (E(1), P(3), P(5)).
   REQUIRE(f.scope >= 0);
   CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::E, 1});
-  CHECK(f.changed == 8);
-  CHECK(f.made == 8);
-  CHECK(f.moved == 1);
-  CHECK(f.removed == 3);
-  CHECK(f.relinked == 3);
-  CHECK(f.touched == 15);
+  CHECK(f.nodes == Touched{.changed = 8, .touched = 15, .made = 8, .moved = 1, .relinked = 3, .removed = 3});
   // v4 on the positive side of E(1), below the floor T(0).
   CHECK(f.before.describe() == R"(P(0) [SV(v0)]
   + P(1) [SV(v1)]
@@ -432,12 +433,7 @@ TEST_CASE("VV update of thesis Figs. 7.1 and 7.6: a vertex crossing the P-plane 
   // moving sites in P(2)'s subtree (`--update reinsert`) touches twelve.
   REQUIRE(f.scope >= 0);
   CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::P, 2});
-  CHECK(f.changed == 6);
-  CHECK(f.made == 6);
-  CHECK(f.moved == 1);
-  CHECK(f.relinked == 2);
-  CHECK(f.removed == 0);
-  CHECK(f.touched == 9);
+  CHECK(f.nodes == Touched{.changed = 6, .touched = 9, .made = 6, .moved = 1, .relinked = 2, .removed = 0});
   // After: P(5) has moved to P(2)'s positive side (Fig. 7.1(c)); its edges
   // e4 and e5 moved with it and were split by P(2) (Fig. 7.1(d)): their
   // pieces on the negative side stay under P(4), ending at the threads
@@ -768,12 +764,7 @@ TEST_CASE("dragging with merging and splitting effects (thesis Fig. 7.4): a vert
   // pieces of e3 on both sides).
   REQUIRE(f.scope >= 0);
   CHECK(f.before.nodes[static_cast<std::size_t>(f.scope)].cut == SP{SP::Kind::P, 1});
-  CHECK(f.changed == 6);
-  CHECK(f.made == 6);
-  CHECK(f.moved == 1);
-  CHECK(f.relinked == 4);
-  CHECK(f.removed == 0);
-  CHECK(f.touched == 11);
+  CHECK(f.nodes == Touched{.changed = 6, .touched = 11, .made = 6, .moved = 1, .relinked = 4, .removed = 0});
   CHECK(below(f.before, SP{SP::Kind::E, 1}) == R"(E(1) [SV(v1) SV(v2) SE(e1)]
   - P(5) [SV(v5)]
     - E(3) [SV(e3,P2) SV(e3,E1) SE(e3)]

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <tuple>
 
 #include "kvd/tree/compare.hpp"
 
@@ -257,7 +256,7 @@ Update_cost local_update(tree::Kvd_tree& t, const tree::Tree_links& links, const
   // ancestors' cuts are not edited); a sign above the scope found changed
   // widens the scope to the whole tree, where the pieces are the sites'
   // whole fragments.
-  std::vector<std::pair<SP, tree::Fragment>> pieces;
+  Site_pieces pieces;
   if (asked) {
     std::vector<int> path;  // the scope's proper ancestors, root first
     for (int n = links.parent(scope); n >= 0; n = links.parent(n)) path.push_back(n);
