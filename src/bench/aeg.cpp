@@ -145,6 +145,12 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   std::optional<Kinetic> subtree, rebuild;
   row.subtree_run = n <= c.subtree_up_to;
   row.rebuild_run = n <= c.rebuild_up_to;
+  {
+    const segments::Cylindrical_bsp tree = local.tree();
+    row.nodes = tree.counts().nodes;
+    row.certificates = local.certificates();
+    row.aeg = segments::aeg_certificate_counts(tree, n);
+  }
   if (row.subtree_run) subtree.emplace(k, s, false, segments::Segment_update::subtree);
   if (row.rebuild_run) rebuild.emplace(k, s, false, segments::Segment_update::rebuild);
   const std::string label =

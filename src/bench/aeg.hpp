@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "kvd/segments/aeg_certificates.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 
 namespace kvd::bench::aeg_suite {
@@ -31,6 +32,10 @@ struct Kinetic_row {
   std::string crossings = "linear";  // random: short segments (k = O(n)) or long ones ("quadratic": k = Θ(n²))
   std::size_t n = 0, m = 0;
   std::size_t k = 0;  // crossings at the start
+  // At the start: the tree's nodes, the certificates the run keeps, and the
+  // paper's (Lemma 3.1) for the same tree.
+  std::size_t nodes = 0, certificates = 0;
+  segments::Aeg_certificate_counts aeg;
   std::size_t batches = 0, failures = 0, changed = 0;  // changed: batches that changed the tree
   std::array<std::size_t, 4> events{};  // failures by segments::Segment_event
   double time = 0;  // from the start to the last batch, or to the span's end when the run reached it

@@ -66,7 +66,7 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
       "height_over_log2n,build_exact_ms,build_double_ms,build_ratio,batches,failures,changed_batches,vertex,edge,"
       "intersection,flip,time,vertex_per_mn,edge_per_mn,intersection_per_mn,flip_per_m,local_mean_ms,local_max_ms,"
       "subtree_mean_ms,subtree_max_ms,rebuild_mean_ms,rebuild_max_ms,subtree_ratio,rebuild_ratio,nodes_rebuilt_median,"
-      "subtree_nodes_median,frontier_share,same\n";
+      "subtree_nodes_median,frontier_share,same,nodes_at_start,certificates,aeg_transient,aeg_certificates\n";
   for (const Static_row& r : statics) {
     const segments::Bsp_counts& c = r.counts;
     out += "static,random," + r.crossings + "," + std::to_string(r.n) + ",0," + std::to_string(r.k) + "," +
@@ -74,7 +74,7 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            std::to_string(c.intersection_cuts) + "," + std::to_string(c.edge_cuts) + "," + std::to_string(c.height) +
            "," + significant(r.size_over_bound(), 6) + "," + significant(r.height_over_log(), 6) + "," +
            cli::fixed(r.build_exact_ms, 3) + "," + cli::fixed(r.build_double_ms, 3) + "," +
-           ratio(r.build_exact_ms, r.build_double_ms, 3) + ",,,,,,,,,,,,,,,,,,,,,,,,\n";
+           ratio(r.build_exact_ms, r.build_double_ms, 3) + ",,,,,,,,,,,,,,,,,,,,,,,,,,,,\n";
   }
   for (const Kinetic_row& r : kinetics) {
     out += "kinetic," + r.family + "," + r.crossings + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," +
@@ -90,7 +90,9 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            cell(m, ratio(r.subtree_mean_ms, r.local_mean_ms, 3), "") + "," +
            cell(b, ratio(r.rebuild_mean_ms, r.local_mean_ms, 3), "") + "," + cli::fixed(r.nodes_rebuilt_median, 1) +
            "," + cell(m, cli::fixed(r.subtree_nodes_median, 1), "") + "," + cli::fixed(r.frontier_share, 3) + "," +
-           cell(m || b, r.same ? "yes" : "no", "") + "\n";
+           cell(m || b, r.same ? "yes" : "no", "") + "," + std::to_string(r.nodes) + "," +
+           std::to_string(r.certificates) + "," + std::to_string(r.aeg.transient) + "," + std::to_string(r.aeg.total()) +
+           "\n";
   }
   return out;
 }
@@ -164,6 +166,25 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
            cell(b, ratio(r.rebuild_mean_ms, r.local_mean_ms, 2), "—") + " | " + cli::fixed(r.nodes_rebuilt_median, 0) +
            " / " + cell(m, cli::fixed(r.subtree_nodes_median, 0), "—") + " | " + cli::fixed(r.frontier_share, 2) +
            " | " + cell(m || b, r.same ? "yes" : "**no**", "—") + " |\n";
+  }
+  out += "\n## Certificates against Lemma 3.1\n\n"
+         "The same scenes at their start. *Kept*: the certificates the kinetic BSP keeps, every sign its "
+         "construction decides. *Paper's*: the set of section 3.1 for the same tree, computed by "
+         "`aeg_certificate_counts`: one per transient node (a child of a point cut with no point cut below: its "
+         "cell collapses), one per endpoint (the segment just above or below it changes) and one per segment (it "
+         "flips). Lemma 3.1 bounds the paper's set by O(n + k); the kept set grows with the tree, O(n log n + k) "
+         "(Theorem 2.3).\n\n"
+         "| scene | n | m | k | nodes | kept | paper's: transient / endpoints / flips | paper's | kept / paper's | kept "
+         "/ (n log2 n + k) | paper's / (n + k) |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Kinetic_row& r : kinetics) {
+    const double n = static_cast<double>(r.n), k = static_cast<double>(r.k);
+    const double kept = static_cast<double>(r.certificates), paper = static_cast<double>(r.aeg.total());
+    out += "| " + label(r) + " | " + std::to_string(r.n) + " | " + std::to_string(r.m) + " | " + std::to_string(r.k) +
+           " | " + std::to_string(r.nodes) + " | " + std::to_string(r.certificates) + " | " +
+           std::to_string(r.aeg.transient) + " / " + std::to_string(r.aeg.endpoints) + " / " +
+           std::to_string(r.aeg.flips) + " | " + std::to_string(r.aeg.total()) + " | " + ratio(kept, paper, 2) +
+           " | " + cli::fixed(kept / (n * std::log2(n) + k), 2) + " | " + cli::fixed(paper / (n + k), 2) + " |\n";
   }
   if (plotted)
     out += "\n## Plot\n\nThe two quotients of the static trees, and the mean update per batch of the random "

@@ -48,16 +48,11 @@ private:
     const Bsp_node& node = b_.nodes[n];
     if (!(node.cell == expected)) fail(n, "its cell is not the one its ancestors' cuts make");
     const Cell& c = expected;
-    if (c.left && c.right && cmp(*c.left, *c.right) >= 0) fail(n, "its left wall is not left of its right wall");
-    if (c.floor && c.roof) {
-      int strict = 0;
-      for (const auto& wall : {c.left, c.right}) {
-        if (!wall) continue;
-        const int o = order(*wall, *c.roof, *c.floor);
-        if (o < 0) fail(n, "its roof passes below its floor at wall " + name(*wall));
-        strict += o > 0;
-      }
-      if (c.left && c.right && strict == 0) fail(n, "its roof meets its floor at both walls");
+    switch (cell_shape(c, p_, t_)) {
+      case Cell_shape::proper: break;
+      case Cell_shape::walls_crossed: fail(n, "its left wall is not left of its right wall"); break;
+      case Cell_shape::roof_below_floor: fail(n, "its roof passes below its floor at a wall"); break;
+      case Cell_shape::pinched: fail(n, "its roof meets its floor at both walls"); break;
     }
     if (node.kind == Cut_kind::leaf) return;
     Cell first = c, second = c;
@@ -145,12 +140,28 @@ private:
 }  // namespace
 
 template <class K>
+Cell_shape cell_shape(const Cell& c, const Segment_predicates<K>& pred, const typename K::Time& t) {
+  if (c.left && c.right && pred.compare_x(*c.left, *c.right, t).sign >= 0) return Cell_shape::walls_crossed;
+  if (!c.floor || !c.roof) return Cell_shape::proper;
+  int strict = 0;
+  for (const auto& wall : {c.left, c.right}) {
+    if (!wall) continue;
+    // 0 only by identity: the wall passes through the crossing of the two.
+    const int o = pred.order_at(*wall, *c.roof, *c.floor, t).sign;
+    if (o < 0) return Cell_shape::roof_below_floor;
+    strict += o > 0;
+  }
+  return c.left && c.right && strict == 0 ? Cell_shape::pinched : Cell_shape::proper;
+}
+
+template <class K>
 std::vector<std::string> bsp_violations(const Cylindrical_bsp& bsp, const Segment_predicates<K>& pred,
                                         const typename K::Time& t) {
   return Checker<K>(bsp, pred, t).run();
 }
 
-#define KVD_INSTANTIATE_BSP_VIOLATIONS(K)                                                        \
+#define KVD_INSTANTIATE_BSP_VIOLATIONS(K)                                                                  \
+  template Cell_shape cell_shape<K>(const Cell&, const Segment_predicates<K>&, const typename K::Time&);     \
   template std::vector<std::string> bsp_violations<K>(const Cylindrical_bsp&, const Segment_predicates<K>&, \
                                                       const typename K::Time&);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_BSP_VIOLATIONS)

@@ -86,6 +86,14 @@ struct Bsp_contradiction : std::logic_error {
 template <class K>
 Cylindrical_bsp build_cylindrical_bsp(const Segment_predicates<K>& pred, const typename K::Time& t);
 
+// A cell at t: a proper trapezoid (the left wall left of the right one, the
+// roof above the floor at each wall, or meeting it there at their crossing,
+// but not at both walls), or how it is not.
+enum class Cell_shape { proper, walls_crossed, roof_below_floor, pinched };
+
+template <class K>
+Cell_shape cell_shape(const Cell& c, const Segment_predicates<K>& pred, const typename K::Time& t);
+
 // Violations of the BSP's invariants at t, checked against the tree without
 // its construction's reasoning: every cell a non-empty trapezoid whose walls
 // and floor and roof are those its ancestors' cuts give it; every fragment
