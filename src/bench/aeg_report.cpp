@@ -172,8 +172,8 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
          "construction decides. *Paper's*: the set of section 3.1 for the same tree, computed by "
          "`aeg_certificate_counts`: one per transient node (a child of a point cut with no point cut below: its "
          "cell collapses), one per endpoint (the segment just above or below it changes) and one per segment (it "
-         "flips). Lemma 3.1 bounds the paper's set by O(n + k); the kept set grows with the tree, O(n log n + k) "
-         "(Theorem 2.3).\n\n"
+         "flips). Lemma 3.1 bounds the paper's set by O(n + k): paper's / (n + k) must stay bounded. The kept set "
+         "holds every sign of the construction, more than one per node.\n\n"
          "| scene | n | m | k | nodes | kept | paper's: transient / endpoints / flips | paper's | kept / paper's | kept "
          "/ (n log2 n + k) | paper's / (n + k) |\n"
          "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
