@@ -55,7 +55,7 @@ TEST_CASE("a segment over an endpoint: the paper's certificates that fail, deriv
   const Site_point s00 = Site_point::endpoint(0), s01 = Site_point::endpoint(1), s10 = Site_point::endpoint(2),
                    s11 = Site_point::endpoint(3), x = Site_point::crossing(0, 1);
   const Exact_time t0(mpq_class(1, 2)), t1(mpq_class(1)), t2(mpq_class(3, 2)), t3(mpq_class(2));
-  const Cylindrical_bsp b0 = build_at(s, t0), b1 = build_at(s, t2), b2 = build_at(s, t3);
+  const Cylindrical_bsp b0 = build_at(s, t0), at_edge = build_at(s, t1), b1 = build_at(s, t2), b2 = build_at(s, t3);
 
   // (V s0.0 . (V s0.1 (E s0 . (V s1.0 . (E s1 . .))) (V s1.1 (E s1 . .) .))): five transient nodes.
   CHECK(cells(b0, transient_nodes(b0)) == std::vector<Cell>{cell({}, s00, {}, {}), cell(s00, s10, 0, {}),
@@ -68,11 +68,10 @@ TEST_CASE("a segment over an endpoint: the paper's certificates that fail, deriv
   CHECK(before.flips == std::vector<int>{1, 1});
   CHECK(before.neighbours == std::vector<std::array<std::int64_t, 2>>{{-1, -1}, {-1, 1}, {0, -1}, {-1, -1}});
 
-  const Aeg_failures edge = aeg_failures(b0, build_at(s, t1), pred, t0, t1);
+  const Aeg_failures edge = aeg_failures(b0, at_edge, pred, t0, t1);
   CHECK(edge.flips.empty());
   CHECK(edge.endpoints == std::vector<std::size_t>{1});
   CHECK(edge.transient_before.empty());
-  const Cylindrical_bsp at_edge = build_at(s, t1);
   CHECK(cells(at_edge, edge.transient_after) == std::vector<Cell>{cell(x, s01, {}, 0), cell(x, s01, 0, {})});
 
   const Aeg_failures intersection = aeg_failures(b1, b2, pred, t2, t3);

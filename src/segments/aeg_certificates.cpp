@@ -12,15 +12,14 @@ namespace {
 bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
 
 // Whether the subtree of v holds a point cut; the transient nodes below v
-// are appended to `out` in pre-order.
+// are appended to `out` in pre-order. A transient node has none below it,
+// so appending it after its subtree keeps the order.
 bool collect(const Cylindrical_bsp& b, std::size_t v, bool parent_point_cut, std::vector<std::size_t>& out) {
   const Bsp_node& node = b.nodes[v];
-  const std::size_t at = out.size();
-  if (parent_point_cut) out.push_back(v);  // taken back below if a point cut turns up
   bool points = point_cut(node);
   if (node.kind != Cut_kind::leaf)
     for (const std::int32_t c : node.child) points = collect(b, static_cast<std::size_t>(c), point_cut(node), out) || points;
-  if (points && parent_point_cut) out.erase(out.begin() + static_cast<std::ptrdiff_t>(at));
+  if (parent_point_cut && !points) out.push_back(v);
   return points;
 }
 

@@ -35,7 +35,6 @@ struct Aeg_state {
   // Per endpoint: the segment just below it and the one just above it, among
   // the others whose x-range holds it (-1: none).
   std::vector<std::array<std::int64_t, 2>> neighbours;
-  friend bool operator==(const Aeg_state&, const Aeg_state&) = default;
 };
 
 template <class K>
