@@ -738,7 +738,7 @@ TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds,
   CHECK(run("bench aeg --repeats 0" + to).status == 2);
   CHECK(run("bench aeg --events x" + to).status == 2);
   CHECK(!std::ifstream(out + "/aeg.md").good());
-  const Run r = run("bench aeg --sizes 20,10 --quadratic-up-to 10 --kinetic-sizes 10 --events 10 --rotating 10 --repeats 1" +
+  const Run r = run("bench aeg --sizes 20,10 --quadratic-up-to 10 --kinetic-sizes 10 --events 10 --rotating 10 --rotating-long 10 --repeats 1" +
                     to);
   REQUIRE(r.status == 0);
   std::ifstream f(out + "/aeg.md");
@@ -768,5 +768,9 @@ TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds,
     CHECK(std::stoul(v["intersection_cuts"]) == 2 * std::stoul(v["k"]));
   }
   CHECK(rows["static"] == 3);   // linear 10 and 20, quadratic 10
-  CHECK(rows["kinetic"] == 5);  // m = 10 and 5, short and long segments, and the rotating scene
+  CHECK(rows["kinetic"] == 6);  // m = 10 and 5, short and long segments, and the two rotating scenes
+  // Both rotating scenes flip, and have a row in the flips' table.
+  const std::string flips = md.substr(md.find("## Flip events"));
+  CHECK(flips.find("| rotating | 10 | ") != std::string::npos);
+  CHECK(flips.find("| rotating, long segments | 10 | ") != std::string::npos);
 }

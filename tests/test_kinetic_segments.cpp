@@ -131,29 +131,60 @@ TEMPLATE_TEST_CASE("a segment turning vertical: a flip event", "[segments][kinet
   CHECK(kin.validation_failures().empty());
 }
 
-// The walks go from endpoint 0 to endpoint 1 whichever is left, so a flip
-// changes only signs decided in the cells the turning segment cuts: the
-// local update replays those (section 3.1.4), not the whole tree. Here the
-// segment turning vertical at t = 0 comes last in the priority order, beside
-// three static segments, one of them crossing it.
-TEST_CASE("a flip replays only the cells of the turning segment", "[segments][kinetic]") {
+// Three static segments, the third crossing the fourth, which turns through
+// vertical at t = 0; the segments in priority order `order`, over [-1, 1].
+// The run of the local update and that of `other` on it, both validated:
+// one batch each, a flip, ending in the same tree and certificates; the
+// local batch, the other's, and the number of nodes at the end.
+namespace {
+
+struct Flip_batches {
+  Kinetic_segment_bsp<Exact_kernel>::Batch local, other;
+  std::size_t nodes = 0;
+};
+Flip_batches flip_batches(std::vector<std::size_t> order, Segment_update other) {
   const auto s = scene_of({fixed(10, 0, 12, 1), fixed(14, 2, 16, 3), fixed(-3, 1, 3, 1),
                            moving(linear(0, -1), linear(-2, 0), linear(0, 1), linear(2, 0))},
-                          {0, 1, 2, 3}, -1, 1);
+                          std::move(order), -1, 1);
   const Exact_kernel k;
-  Kinetic_segment_bsp<Exact_kernel> local(k, s, true), rebuild(k, s, true, Segment_update::rebuild);
-  const auto l = run(local, 10), r = run(rebuild, 10);
+  Kinetic_segment_bsp<Exact_kernel> local(k, s, true), reference(k, s, true, other);
+  const auto l = run(local, 10), r = run(reference, 10);
   REQUIRE(l.size() == 1);
   REQUIRE(r.size() == 1);
   CHECK(l[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
   CHECK(l[0].changed);
-  CHECK(local.tree().text() == rebuild.tree().text());
-  CHECK(local.certificate_list() == rebuild.certificate_list());
-  const std::size_t nodes = local.tree().counts().nodes;
-  CHECK(r[0].nodes_rebuilt == nodes);
-  CHECK(l[0].nodes_rebuilt > 0);
-  CHECK(l[0].nodes_rebuilt < nodes / 2);
+  CHECK(local.tree().text() == reference.tree().text());
+  CHECK(local.certificate_list() == reference.certificate_list());
   CHECK(local.validation_failures().empty());
+  CHECK(reference.validation_failures().empty());
+  return {l[0], r[0], local.tree().counts().nodes};
+}
+
+}  // namespace
+
+// The walks go from endpoint 0 to endpoint 1 whichever is left, so a flip
+// changes only signs decided in the cells the turning segment cuts: the
+// local update replays those (section 3.1.4), not the whole tree. Here the
+// turning segment comes last in the priority order.
+TEST_CASE("a flip replays only the cells of the turning segment", "[segments][kinetic]") {
+  const Flip_batches f = flip_batches({0, 1, 2, 3}, Segment_update::rebuild);
+  CHECK(f.other.nodes_rebuilt == f.nodes);
+  CHECK(f.local.nodes_rebuilt > 0);
+  CHECK(f.local.nodes_rebuilt < f.nodes / 2);
+}
+
+// The turning segment first in priority: its frontier node is the root, and
+// the later segments' subtrees lie beside its cuts, right of both endpoints
+// before and after the flip. The flip remakes the root as a frontier node:
+// the turning segment's cuts again, and the cells right of them that only the
+// static segments 0 and 1 reach are the old subtrees, moved.
+TEST_CASE("a flip remakes the turning segment's cuts and moves the subtrees beside them", "[segments][kinetic]") {
+  const Flip_batches f = flip_batches({3, 0, 1, 2}, Segment_update::subtree);
+  CHECK(f.local.frontier_replays == 1);
+  CHECK(f.local.subtree_replays == 0);
+  // The subtree update replays the root's subtree: every node below it.
+  CHECK(f.other.nodes_rebuilt + 1 == f.nodes);
+  CHECK(f.local.nodes_rebuilt < f.other.nodes_rebuilt);
 }
 
 // Random scenes of small integers: segments start degenerate (shared

@@ -37,7 +37,8 @@ using segments::Segment_family;
 const char* const aeg_help =
     "usage: kvd bench aeg [--sizes N,N,...] [--quadratic-up-to N] [--kinetic-sizes N,N,...]\n"
     "                     [--subtree-up-to N] [--rebuild-up-to N] [--kinetic-quadratic-up-to N]\n"
-    "                     [--events N] [--rotating N] [--repeats N] [--out DIR]\n"
+    "                     [--events N] [--rotating N] [--rotating-long N] [--repeats N]\n"
+    "                     [--out DIR]\n"
     "\n"
     "The cylindrical BSP of intersecting segments (seed 003) against the paper's\n"
     "bounds, on the scenes of kvd generate segments-random --n N --seed 1:\n"
@@ -55,7 +56,9 @@ const char* const aeg_help =
     "            the N-th certificate failure (--events, default 50); and a\n"
     "            scene of --rotating segments (default 20, 0: none) turning\n"
     "            through vertical (segments-rotating, flip events) over its\n"
-    "            whole span: the exact kinetic BSP without validation, its\n"
+    "            whole span, and one of --rotating-long long segments (default\n"
+    "            30, 0: none; --crossings quadratic): the exact kinetic BSP\n"
+    "            without validation, its\n"
     "            local update, its subtree update (up to --subtree-up-to\n"
     "            segments, default 3200) and its rebuild (up to\n"
     "            --rebuild-up-to, default 800) run batch by batch in turn;\n"
@@ -144,7 +147,8 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   Kinetic local(k, s, false, segments::Segment_update::local);
   std::optional<Kinetic> subtree, rebuild;
   row.subtree_run = n <= c.subtree_up_to;
-  row.rebuild_run = n <= c.rebuild_up_to;
+  // The long rotating scene has thousands of batches: no rebuild there.
+  row.rebuild_run = n <= c.rebuild_up_to && !(family == Segment_family::rotating && crossings == Crossings::quadratic);
   {
     const segments::Cylindrical_bsp tree = local.tree();
     row.nodes = tree.counts().nodes;
@@ -158,6 +162,7 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
       ", n = " + std::to_string(n) + ", m = " + std::to_string(m);
   const auto progress = cli::progress_every_few_seconds(label);
   std::vector<double> local_ms, subtree_ms, rebuild_ms, nodes, subtree_nodes;
+  std::vector<std::size_t> flips;  // the batches holding a flip failure
   std::size_t frontier = 0, replays = 0;
   // The reference updates run batch by batch with the local one, and must
   // process the same batches.
@@ -183,6 +188,7 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
     row.failures += a.failing.size();
     row.changed += a.changed;
     for (std::size_t e = 0; e < row.events.size(); ++e) row.events[e] += a.events[e];
+    if (a.events[static_cast<std::size_t>(segments::Segment_event::flip)] > 0) flips.push_back(local_ms.size());
     local_ms.push_back(1e3 * a.update_seconds);
     nodes.push_back(static_cast<double>(a.nodes_rebuilt));
     progress(row.batches, row.failures);
@@ -203,6 +209,24 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   row.nodes_rebuilt_median = cli::median(nodes);
   row.subtree_nodes_median = cli::median(subtree_nodes);
   row.frontier_share = replays ? static_cast<double>(frontier) / static_cast<double>(replays) : 0;
+  // The flip batches apart (the subtree update ran the same batches, in turn).
+  const auto pick = [&](const std::vector<double>& all, bool in) {
+    std::vector<double> out;
+    for (std::size_t i = 0, f = 0; i < all.size(); ++i) {
+      const bool flip = f < flips.size() && flips[f] == i;
+      f += flip;
+      if (flip == in) out.push_back(all[i]);
+    }
+    return out;
+  };
+  row.flip_batches = flips.size();
+  row.flip_local_mean_ms = mean(pick(local_ms, true));
+  row.flip_local_max_ms = max(pick(local_ms, true));
+  row.flip_nodes_median = cli::median(pick(nodes, true));
+  row.flip_subtree_mean_ms = mean(pick(subtree_ms, true));
+  row.flip_subtree_max_ms = max(pick(subtree_ms, true));
+  row.flip_subtree_nodes_median = cli::median(pick(subtree_nodes, true));
+  row.other_local_mean_ms = mean(pick(local_ms, false));
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
             << cli::fixed(row.local_mean_ms, 2) << " ms"
             << (row.subtree_run ? ", subtree " + cli::fixed(row.subtree_mean_ms, 2) + " ms" : std::string())
@@ -229,6 +253,7 @@ int aeg(cli::Args& args) {
     else if (a == "--kinetic-quadratic-up-to") c.kinetic_quadratic_up_to = args.unsigned_value(a);
     else if (a == "--events") c.events = args.unsigned_value(a);
     else if (a == "--rotating") c.rotating = args.unsigned_value(a);
+    else if (a == "--rotating-long") c.rotating_long = args.unsigned_value(a);
     else if (a == "--repeats") {
       const std::size_t r = args.unsigned_value(a);
       if (r < 1 || r > 100) throw cli::Usage_error("kvd bench aeg: --repeats must be between 1 and 100");
@@ -250,10 +275,10 @@ int aeg(cli::Args& args) {
     for (std::size_t m : {n, n / 2})
       if (m > 0 && n <= c.kinetic_quadratic_up_to)
         kinetics.push_back(measure_kinetic(Segment_family::random, n, m, c.events, c, Crossings::quadratic));
-  if (c.rotating > 0) {
-    constexpr std::size_t the_span = std::numeric_limits<std::size_t>::max();
-    kinetics.push_back(measure_kinetic(Segment_family::rotating, c.rotating, c.rotating, the_span, c));
-  }
+  // The rotating scenes run over their whole span.
+  constexpr std::size_t the_span = std::numeric_limits<std::size_t>::max();
+  for (const auto& [n, crossings] : {std::pair{c.rotating, Crossings::linear}, std::pair{c.rotating_long, Crossings::quadratic}})
+    if (n > 0) kinetics.push_back(measure_kinetic(Segment_family::rotating, n, n, the_span, c, crossings));
 
   cli::write_atomically("bench aeg", c.out + "/aeg.csv", csv(statics, kinetics));
   cli::write_atomically("bench aeg", c.out + "/aeg-static.dat", static_plot_data(statics));

@@ -45,6 +45,12 @@ struct Kinetic_row {
   // The failures' topmost nodes that the local update handled by the
   // frontier replay, over all of them.
   double frontier_share = 0;
+  // The batches holding a flip failure: how many, the local and the subtree
+  // update's mean and max over them (ms) and the nodes each made again
+  // (median); and the local update's mean over the other batches.
+  std::size_t flip_batches = 0;
+  double flip_local_mean_ms = 0, flip_local_max_ms = 0, flip_subtree_mean_ms = 0, flip_subtree_max_ms = 0;
+  double flip_nodes_median = 0, flip_subtree_nodes_median = 0, other_local_mean_ms = 0;
   bool subtree_run = false, rebuild_run = false;  // within --subtree-up-to and --rebuild-up-to
   bool same = true;  // the updates run had the same batches (times, failing certificates) and end in the same tree
   // Failures of `event` per unit of time, over m n (flips: over m); 0
@@ -59,6 +65,7 @@ struct Config {
   std::size_t subtree_up_to = 3200, rebuild_up_to = 800;  // the reference updates, up to these sizes
   std::size_t kinetic_quadratic_up_to = 200;              // kinetic runs of long segments, up to this size
   std::size_t rotating = 20;  // segments of the rotating scene (run over its span), 0: none
+  std::size_t rotating_long = 30;  // the same with long segments (k = Θ(n²)), 0: none
   std::size_t events = 50;
   int repeats = 3;
   std::string out = "bench-out";

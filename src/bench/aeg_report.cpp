@@ -20,7 +20,7 @@ std::string significant(double x, int digits) {
 std::string ratio(double a, double b, int digits) { return b > 0 ? cli::fixed(a / b, digits) : ""; }
 
 std::string label(const Kinetic_row& r) {
-  if (r.family == "rotating") return "rotating";
+  if (r.family == "rotating") return r.crossings == "linear" ? "rotating" : "rotating, long segments";
   return r.crossings == "linear" ? "random, linear motion" : "random, long segments, linear motion";
 }
 
@@ -71,7 +71,9 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
       "height_over_log2n,build_exact_ms,build_double_ms,build_ratio,batches,failures,changed_batches,vertex,edge,"
       "intersection,flip,time,vertex_per_mn,edge_per_mn,intersection_per_mn,flip_per_m,local_mean_ms,local_max_ms,"
       "subtree_mean_ms,subtree_max_ms,rebuild_mean_ms,rebuild_max_ms,subtree_ratio,rebuild_ratio,nodes_rebuilt_median,"
-      "subtree_nodes_median,frontier_share,same,nodes_at_start,certificates,aeg_transient,aeg_certificates\n";
+      "subtree_nodes_median,frontier_share,same,nodes_at_start,certificates,aeg_transient,aeg_certificates,flip_batches,"
+      "flip_local_mean_ms,flip_local_max_ms,flip_subtree_mean_ms,flip_subtree_max_ms,flip_nodes_median,"
+      "flip_subtree_nodes_median,other_local_mean_ms\n";
   for (const Static_row& r : statics) {
     const segments::Bsp_counts& c = r.counts;
     out += "static,random," + r.crossings + "," + std::to_string(r.n) + ",0," + std::to_string(r.k) + "," +
@@ -79,7 +81,7 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            std::to_string(c.intersection_cuts) + "," + std::to_string(c.edge_cuts) + "," + std::to_string(c.height) +
            "," + significant(r.size_over_bound(), 6) + "," + significant(r.height_over_log(), 6) + "," +
            cli::fixed(r.build_exact_ms, 3) + "," + cli::fixed(r.build_double_ms, 3) + "," +
-           ratio(r.build_exact_ms, r.build_double_ms, 3) + ",,,,,,,,,,,,,,,,,,,,,,,,,,,,\n";
+           ratio(r.build_exact_ms, r.build_double_ms, 3) + std::string(36, ',') + "\n";
   }
   for (const Kinetic_row& r : kinetics) {
     out += "kinetic," + r.family + "," + r.crossings + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," +
@@ -97,7 +99,10 @@ std::string csv(const std::vector<Static_row>& statics, const std::vector<Kineti
            "," + cell(m, cli::fixed(r.subtree_nodes_median, 1), "") + "," + cli::fixed(r.frontier_share, 3) + "," +
            cell(m || b, r.same ? "yes" : "no", "") + "," + std::to_string(r.nodes) + "," +
            std::to_string(r.certificates) + "," + std::to_string(r.aeg.transient) + "," + std::to_string(r.aeg.total()) +
-           "\n";
+           "," + std::to_string(r.flip_batches) + "," + cli::fixed(r.flip_local_mean_ms, 3) + "," +
+           cli::fixed(r.flip_local_max_ms, 3) + "," + cell(m, cli::fixed(r.flip_subtree_mean_ms, 3), "") + "," +
+           cell(m, cli::fixed(r.flip_subtree_max_ms, 3), "") + "," + cli::fixed(r.flip_nodes_median, 1) + "," +
+           cell(m, cli::fixed(r.flip_subtree_nodes_median, 1), "") + "," + cli::fixed(r.other_local_mean_ms, 3) + "\n";
   }
   return out;
 }
@@ -189,6 +194,30 @@ std::string markdown(const Config& c, const std::vector<Static_row>& statics, co
            std::to_string(r.aeg.transient) + " / " + std::to_string(r.aeg.endpoints) + " / " +
            std::to_string(r.aeg.flips) + " | " + std::to_string(r.aeg.total()) + " | " + ratio(kept, paper, 2) +
            " | " + cli::fixed(kept / size_bound(r.n, r.k), 2) + " | " + cli::fixed(paper / static_cast<double>(r.n + r.k), 2) + " |\n";
+  }
+  out += "\n## Flip events against Lemma 3.6\n\n"
+         "The scenes with flips, their batches holding a flip failure apart. A flip of s_i changes the subtrees of "
+         "the cells of the tree before s_i that s_i crosses (section 3.1.4): the paper's update costs O(k_i log n), "
+         "and O(1) in its augmented BSP (ternary nodes and the marked endpoint), which is not implemented here. The "
+         "local update remakes each topmost node of the flip that is the turning segment's first cut on its path "
+         "as the frontier replay remakes a node (its cuts again, the later segments' subtrees moved where their "
+         "arrivals did not change); the subtree update replays those nodes' subtrees whole. *Update*: ms per batch "
+         "with a flip; *nodes made again*: median over those batches; *other batches*: the local update's mean over "
+         "the batches without a flip.\n\n"
+         "| scene | n | k | flip batches | local: mean | max | subtree: mean | max | subtree / local | nodes made "
+         "again: local / subtree | other batches: local mean | flip / other |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Kinetic_row& r : kinetics) {
+    if (r.flip_batches == 0) continue;
+    const bool m = r.subtree_run;
+    out += "| " + label(r) + " | " + std::to_string(r.n) + " | " + std::to_string(r.k) + " | " +
+           std::to_string(r.flip_batches) + " | " + cli::fixed(r.flip_local_mean_ms, 2) + " | " +
+           cli::fixed(r.flip_local_max_ms, 1) + " | " + cell(m, cli::fixed(r.flip_subtree_mean_ms, 2), "—") + " | " +
+           cell(m, cli::fixed(r.flip_subtree_max_ms, 1), "—") + " | " +
+           cell(m, ratio(r.flip_subtree_mean_ms, r.flip_local_mean_ms, 2), "—") + " | " +
+           cli::fixed(r.flip_nodes_median, 0) + " / " + cell(m, cli::fixed(r.flip_subtree_nodes_median, 0), "—") +
+           " | " + cli::fixed(r.other_local_mean_ms, 2) + " | " + ratio(r.flip_local_mean_ms, r.other_local_mean_ms, 1) +
+           " |\n";
   }
   if (plotted)
     out += "\n## Plot\n\nThe two quotients of the static trees, and the mean update per batch of the random "

@@ -86,7 +86,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
                         {"failing", b.failing.size()}, {"events", kinds}, {"changed", b.changed},
                         {"certificates", b.certificates}, {"nodes_rebuilt", b.nodes_rebuilt},
-                        {"frontier_replays", b.frontier_replays}, {"subtree_replays", b.subtree_replays}});
+                        {"frontier_replays", b.frontier_replays}, {"subtree_replays", b.subtree_replays},
+                        {"update_ms", decimal(ms_text(b.update_seconds * 1e3))}});
       }
     Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
               {"failures", failures}, {"simultaneous_batches", simultaneous}, {"changed_batches", changed},

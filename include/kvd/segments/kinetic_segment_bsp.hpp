@@ -23,8 +23,11 @@
 // u's subtree. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
-// cells of the segment's own cuts, and the replay is the paper's (section
-// 3.1.4) update of the subtrees of the cells it crosses, not O(1). This is
+// cells of the segment's own cuts, and the update is the paper's (section
+// 3.1.4) update of the subtrees of the cells it crosses, not O(1): in a batch
+// of flips alone, a topmost node that is the turning segment's first cut on
+// its path is remade as a frontier node (its cuts again, old subtrees moved
+// where their arrivals did not change), one deeper is replayed. This is
 // not the paper's constant-size surgery (LeftShave and the splits of
 // sections 3.1.1-3.1.4), though the fit of old subtrees to new cells follows
 // the moved walls as LeftShave does.
