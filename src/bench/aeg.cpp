@@ -57,8 +57,8 @@ const char* const aeg_help =
     "            scene of --rotating segments (default 20, 0: none) turning\n"
     "            through vertical (segments-rotating, flip events) over its\n"
     "            whole span, and one of --rotating-long long segments (default\n"
-    "            30, 0: none; --crossings quadratic): the exact kinetic BSP\n"
-    "            without validation, its\n"
+    "            30, 0: none; --crossings quadratic; no rebuild: thousands of\n"
+    "            batches): the exact kinetic BSP without validation, its\n"
     "            local update, its subtree update (up to --subtree-up-to\n"
     "            segments, default 3200) and its rebuild (up to\n"
     "            --rebuild-up-to, default 800) run batch by batch in turn;\n"
@@ -188,7 +188,10 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
     row.failures += a.failing.size();
     row.changed += a.changed;
     for (std::size_t e = 0; e < row.events.size(); ++e) row.events[e] += a.events[e];
-    if (a.events[static_cast<std::size_t>(segments::Segment_event::flip)] > 0) flips.push_back(local_ms.size());
+    if (a.events[static_cast<std::size_t>(segments::Segment_event::flip)] > 0) {
+      flips.push_back(local_ms.size());
+      row.flip_whole += a.subtree_replays;
+    }
     local_ms.push_back(1e3 * a.update_seconds);
     nodes.push_back(static_cast<double>(a.nodes_rebuilt));
     progress(row.batches, row.failures);

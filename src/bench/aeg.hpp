@@ -48,7 +48,7 @@ struct Kinetic_row {
   // The batches holding a flip failure: how many, the local and the subtree
   // update's mean and max over them (ms) and the nodes each made again
   // (median); and the local update's mean over the other batches.
-  std::size_t flip_batches = 0;
+  std::size_t flip_batches = 0, flip_whole = 0;  // flip_whole: their topmost nodes the local update replayed whole
   double flip_local_mean_ms = 0, flip_local_max_ms = 0, flip_subtree_mean_ms = 0, flip_subtree_max_ms = 0;
   double flip_nodes_median = 0, flip_subtree_nodes_median = 0, other_local_mean_ms = 0;
   bool subtree_run = false, rebuild_run = false;  // within --subtree-up-to and --rebuild-up-to

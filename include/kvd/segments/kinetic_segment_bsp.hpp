@@ -83,8 +83,9 @@ public:
     std::size_t certificates = 0;                  // in force after the batch
     double update_seconds = 0;                     // the tree and its certificates made again
     std::size_t nodes_rebuilt = 0;                 // nodes made again (all of them with rebuild)
-    // The topmost nodes of the failures updated by the frontier replay, and
-    // those whose subtree was replayed whole (local and subtree updates).
+    // The topmost nodes of the failures updated by the frontier replay (a
+    // flip's remade as frontier nodes included), and those whose subtree was
+    // replayed whole (local and subtree updates).
     std::size_t frontier_replays = 0, subtree_replays = 0;
   };
 
