@@ -43,12 +43,13 @@ inline segments::Segment_scene scene_of(std::vector<segments::Segment> segs, std
 // A generated scene of the family over [0, end], the generator's other
 // options at their defaults.
 inline segments::Segment_scene generated(segments::Segment_family family, std::size_t n, std::uint64_t seed,
-                                         long end) {
+                                         long end, segments::Crossings crossings = segments::Crossings::linear) {
   segments::Segment_generator_options o;
   o.family = family;
   o.n = n;
   o.seed = seed;
   o.end = end;
+  o.crossings = crossings;
   return segments::generate_segments(o);
 }
 

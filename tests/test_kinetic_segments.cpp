@@ -187,6 +187,29 @@ TEST_CASE("a flip remakes the turning segment's cuts and moves the subtrees besi
   CHECK(f.local.nodes_rebuilt < f.other.nodes_rebuilt);
 }
 
+// Long rotating segments (half the box): each turns through vertical while
+// crossing others. Every flip batch there is flips alone, and the local
+// update remakes its topmost nodes as frontier nodes, none replayed whole;
+// the tree in force equals a fresh build between every two batches.
+TEST_CASE("long rotating segments: every flip is remade at the frontier, every batch a fresh build's tree",
+          "[segments][kinetic]") {
+  std::size_t flips = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const auto s = kvd::test::generated(Segment_family::rotating, 12, seed, 10, Crossings::quadratic);
+    Kinetic_segment_bsp<Exact_kernel> kin(Exact_kernel(), s, true);
+    INFO("seed " << seed);
+    while (kin.next_event_time()) {
+      const auto b = kin.advance();
+      if (b.events[static_cast<std::size_t>(Segment_event::flip)] == 0) continue;
+      ++flips;
+      CHECK(b.frontier_replays > 0);
+      CHECK(b.subtree_replays == 0);
+    }
+    CHECK(kin.validation_failures().empty());
+  }
+  CHECK(flips > 20);
+}
+
 // Random scenes of small integers: segments start degenerate (shared
 // x-coordinates, collinear overlaps) and meet degenerate configurations on
 // the way (simultaneous events at the same rational times).
