@@ -33,6 +33,15 @@ std::vector<Cell> cells(const Cylindrical_bsp& b, const std::vector<std::size_t>
   return out;
 }
 
+// A rational instant strictly between a and b, 20 times closer to b
+// (towards_b) or to a than the first rational between them.
+Exact_time near(const Exact_time& a, const Exact_time& b, bool towards_b) {
+  mpq_class x = kinetic::rational_between(a, b);
+  for (int k = 0; k < 20; ++k)
+    x = towards_b ? kinetic::rational_between(Exact_time(x), b) : kinetic::rational_between(a, Exact_time(x));
+  return Exact_time(x);
+}
+
 Cell cell(std::optional<Site_point> left, std::optional<Site_point> right, std::optional<std::uint32_t> floor,
           std::optional<std::uint32_t> roof) {
   return {left, right, floor, roof};
@@ -112,9 +121,7 @@ TEST_CASE("one of the paper's certificates fails at every change of the tree", "
     for (std::size_t n = 0; n < 40 && kin.next_event_time(); ++n) {
       const Exact_time t = kin.advance().time;
       // Just before the batch: closer to it than to the one before.
-      mpq_class before = kinetic::rational_between(last, t);
-      for (int k = 0; k < 20; ++k) before = kinetic::rational_between(Exact_time(before), t);
-      const Exact_time t0(before);
+      const Exact_time t0 = near(last, t, true);
       const Cylindrical_bsp b0 = build_at(s, t0), b1 = build_at(s, t);
       {
         // Between the last batch and this one the tree b0 stands, and none
@@ -125,9 +132,7 @@ TEST_CASE("one of the paper's certificates fails at every change of the tree", "
         // built; between two of them: no transient node of b0 has a cell
         // that is not proper at either, no segment flips, and no endpoint's
         // neighbour above or below differs.
-        mpq_class after = kinetic::rational_between(last, t0);
-        for (int k = 0; k < 20; ++k) after = kinetic::rational_between(last, Exact_time(after));
-        const Exact_time from(after), mid(kinetic::rational_between(last, t));
+        const Exact_time from = near(last, t0, false), mid(kinetic::rational_between(last, t));
         for (const auto& [x, y] : {std::pair{&from, &mid}, std::pair{&mid, &t0}}) {
           const Aeg_failures quiet = aeg_failures(b0, b0, pred, *x, *y);
           INFO(name << ", between the batches before t = " << t.to_string() << ", from t = " << x->to_string());

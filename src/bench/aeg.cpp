@@ -222,12 +222,13 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
     }
     return out;
   };
+  const std::vector<double> flip_ms = pick(local_ms, true), flip_subtree_ms = pick(subtree_ms, true);
   row.flip_batches = flips.size();
-  row.flip_local_mean_ms = mean(pick(local_ms, true));
-  row.flip_local_max_ms = max(pick(local_ms, true));
+  row.flip_local_mean_ms = mean(flip_ms);
+  row.flip_local_max_ms = max(flip_ms);
   row.flip_nodes_median = cli::median(pick(nodes, true));
-  row.flip_subtree_mean_ms = mean(pick(subtree_ms, true));
-  row.flip_subtree_max_ms = max(pick(subtree_ms, true));
+  row.flip_subtree_mean_ms = mean(flip_subtree_ms);
+  row.flip_subtree_max_ms = max(flip_subtree_ms);
   row.flip_subtree_nodes_median = cli::median(pick(subtree_nodes, true));
   row.other_local_mean_ms = mean(pick(local_ms, false));
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
