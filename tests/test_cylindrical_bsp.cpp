@@ -152,7 +152,11 @@ TEST_CASE("the invariants catch a tree that is not a BSP of its segments", "[seg
   Cylindrical_bsp swapped = good;
   for (Bsp_node& n : swapped.nodes)
     if (n.kind == Cut_kind::edge && n.segment == 0) std::swap(n.child[0], n.child[1]);
-  CHECK(!bsp_violations(swapped, pred, k.time(0)).empty());
+  // Among them a cell of s0 and s1 upside down, named with the wall where
+  // it is: at x = 1 (s1's endpoint 0) s0 is at y = 1 and s1 at y = 4.
+  const auto w = bsp_violations(swapped, pred, k.time(0));
+  CHECK(std::find(w.begin(), w.end(), "node 18: its roof s0 passes below its floor s1 at the wall through s1.0") !=
+        w.end());
   // A fragment of s1 dropped (its edge cut made a leaf): a gap in the tiling,
   // and s1 meets a leaf's interior.
   Cylindrical_bsp dropped = good;

@@ -187,6 +187,36 @@ TEST_CASE("a flip remakes the turning segment's cuts and moves the subtrees besi
   CHECK(f.local.nodes_rebuilt < f.other.nodes_rebuilt);
 }
 
+// A flight-plan change at the instant of a flip that turns the segment back:
+// the x orders of its points change again, as at the flip, and set_motion
+// goes through the same update (proofs/segment-local-update.md, "Flips").
+// The tree is the one before the flip, and the certificates a fresh build's.
+TEST_CASE("a flight-plan change at a flip turns the segment back", "[segments][kinetic]") {
+  const auto s = scene_of({fixed(10, 0, 12, 1), fixed(14, 2, 16, 3), fixed(-3, 1, 3, 1),
+                           moving(linear(0, -1), linear(-2, 0), linear(0, 1), linear(2, 0))},
+                          {3, 0, 1, 2}, -1, 1);
+  const Exact_kernel k;
+  Kinetic_segment_bsp<Exact_kernel> kin(k, s, true);
+  const std::string before = kin.tree().text();
+  const auto batches = kin.advance_to(Exact_time(0));
+  REQUIRE(batches.size() == 1);
+  REQUIRE(batches[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  REQUIRE(kin.tree().text() != before);
+  // From (t, -2) to (-t, 2): where it is at t = 0, turning the other way.
+  const Segment_motion back = endpoints_motion(linear(0, 1), linear(-2, 0), linear(0, -1), linear(2, 0));
+  CHECK(kin.set_motion(3, back));
+  CHECK(kin.tree().text() == before);
+  Segment_scene changed = s;
+  changed.segments[3].motion = back;
+  const Kinetic_segment_bsp<Exact_kernel> fresh(k, changed, false, Segment_update::local, Exact_time(0));
+  CHECK(kin.tree().text() == fresh.tree().text());
+  CHECK(kin.certificate_list() == fresh.certificate_list());
+  CHECK(kin.arrivals() == fresh.arrivals());
+  // It does not turn again before the span ends.
+  CHECK(run(kin, 10).empty());
+  CHECK(kin.validation_failures().empty());
+}
+
 // Long rotating segments (half the box): each turns through vertical while
 // crossing others. Every flip batch there is flips alone, and the local
 // update remakes its topmost nodes as frontier nodes, none replayed whole;

@@ -12,11 +12,6 @@ namespace kvd::segments {
 
 namespace {
 
-std::string name(const Site_point& p) {
-  if (p.kind == Site_point::Kind::endpoint) return "s" + std::to_string(p.a / 2) + "." + std::to_string(p.a % 2);
-  return "s" + std::to_string(p.a) + "xs" + std::to_string(p.b);
-}
-
 template <class K>
 class Checker {
 public:
@@ -51,7 +46,15 @@ private:
     switch (cell_shape(c, p_, t_)) {
       case Cell_shape::proper: break;
       case Cell_shape::walls_crossed: fail(n, "its left wall is not left of its right wall"); break;
-      case Cell_shape::roof_below_floor: fail(n, "its roof passes below its floor at a wall"); break;
+      case Cell_shape::roof_below_floor: {
+        // The wall where it does (cell_shape says only that one does).
+        std::string at;
+        for (const auto& wall : {c.left, c.right})
+          if (wall && at.empty() && order(*wall, *c.roof, *c.floor) < 0) at = point_name(*wall);
+        fail(n, "its roof s" + std::to_string(*c.roof) + " passes below its floor s" + std::to_string(*c.floor) +
+                    " at the wall through " + at);
+        break;
+      }
       case Cell_shape::pinched: fail(n, "its roof meets its floor at both walls"); break;
     }
     if (node.kind == Cut_kind::leaf) return;
@@ -77,8 +80,8 @@ private:
         cmp(Site_point::endpoint(p_.right_endpoint(s, t_)), *c.right) < 0)
       fail(n, "the fragment of s" + std::to_string(s) + " does not reach both walls");
     for (const Site_point& wall : {*c.left, *c.right}) {
-      if (c.floor && order(wall, s, *c.floor) < 0) fail(n, "the fragment passes below the floor at " + name(wall));
-      if (c.roof && order(wall, s, *c.roof) > 0) fail(n, "the fragment passes above the roof at " + name(wall));
+      if (c.floor && order(wall, s, *c.floor) < 0) fail(n, "the fragment passes below the floor at " + point_name(wall));
+      if (c.roof && order(wall, s, *c.roof) > 0) fail(n, "the fragment passes above the roof at " + point_name(wall));
     }
   }
 
