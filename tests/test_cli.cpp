@@ -1,6 +1,7 @@
 // The command-line contract: --help, --version, and exit status 2 on misuse.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -737,8 +738,9 @@ TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds,
   CHECK(run("bench aeg --kinetic-sizes 20,x" + to).status == 2);
   CHECK(run("bench aeg --repeats 0" + to).status == 2);
   CHECK(run("bench aeg --events x" + to).status == 2);
+  CHECK(run("bench aeg --rotating-long 10,x" + to).status == 2);
   CHECK(!std::ifstream(out + "/aeg.md").good());
-  const Run r = run("bench aeg --sizes 20,10 --quadratic-up-to 10 --kinetic-sizes 10 --events 10 --rotating 10 --rotating-long 10 --repeats 1" +
+  const Run r = run("bench aeg --sizes 20,10 --quadratic-up-to 10 --kinetic-sizes 10 --events 10 --rotating 10 --rotating-long 12,10 --repeats 1" +
                     to);
   REQUIRE(r.status == 0);
   std::ifstream f(out + "/aeg.md");
@@ -762,15 +764,18 @@ TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds,
     std::stringstream ls(line);
     for (const std::string& n : names) std::getline(ls, v[n], ',');
     INFO(line);
+    CHECK(std::count(line.begin(), line.end(), ',') == std::count(header.begin(), header.end(), ','));
     ++rows[v["part"]];
     if (v["part"] != "static") continue;
     CHECK(std::stoul(v["vertex_cuts"]) == 2 * std::stoul(v["n"]));
     CHECK(std::stoul(v["intersection_cuts"]) == 2 * std::stoul(v["k"]));
   }
   CHECK(rows["static"] == 3);   // linear 10 and 20, quadratic 10
-  CHECK(rows["kinetic"] == 6);  // m = 10 and 5, short and long segments, and the two rotating scenes
-  // Both rotating scenes flip, and have a row in the flips' table.
+  CHECK(rows["kinetic"] == 7);  // m = 10 and 5, short and long segments, and the three rotating scenes
+  // The rotating scenes flip, and have a row each in the flips' table, the
+  // long ones in increasing size.
   const std::string flips = md.substr(md.find("## Flip events"));
   CHECK(flips.find("| rotating | 10 | ") != std::string::npos);
-  CHECK(flips.find("| rotating, long segments | 10 | ") != std::string::npos);
+  CHECK(flips.find("| rotating, long segments | 10 | ") < flips.find("| rotating, long segments | 12 | "));
+  CHECK(flips.find("| rotating, long segments | 12 | ") != std::string::npos);
 }

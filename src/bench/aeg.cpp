@@ -37,7 +37,7 @@ using segments::Segment_family;
 const char* const aeg_help =
     "usage: kvd bench aeg [--sizes N,N,...] [--quadratic-up-to N] [--kinetic-sizes N,N,...]\n"
     "                     [--subtree-up-to N] [--rebuild-up-to N] [--kinetic-quadratic-up-to N]\n"
-    "                     [--events N] [--rotating N] [--rotating-long N] [--repeats N]\n"
+    "                     [--events N] [--rotating N] [--rotating-long N,N,...] [--repeats N]\n"
     "                     [--out DIR]\n"
     "\n"
     "The cylindrical BSP of intersecting segments (seed 003) against the paper's\n"
@@ -56,9 +56,10 @@ const char* const aeg_help =
     "            the N-th certificate failure (--events, default 50); and a\n"
     "            scene of --rotating segments (default 20, 0: none) turning\n"
     "            through vertical (segments-rotating, flip events) over its\n"
-    "            whole span, and one of --rotating-long long segments (default\n"
-    "            30, 0: none; --crossings quadratic; no rebuild: thousands of\n"
-    "            batches): the exact kinetic BSP without validation, its\n"
+    "            whole span, and one of long segments for each --rotating-long\n"
+    "            size (default 30, 0: none; --crossings quadratic; no rebuild:\n"
+    "            thousands of batches): the exact kinetic BSP without\n"
+    "            validation, its\n"
     "            local update, its subtree update (up to --subtree-up-to\n"
     "            segments, default 3200) and its rebuild (up to\n"
     "            --rebuild-up-to, default 800) run batch by batch in turn;\n"
@@ -227,9 +228,11 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   row.flip_local_mean_ms = mean(flip_ms);
   row.flip_local_max_ms = max(flip_ms);
   row.flip_nodes_median = cli::median(pick(nodes, true));
+  row.flip_nodes_max = max(pick(nodes, true));
   row.flip_subtree_mean_ms = mean(flip_subtree_ms);
   row.flip_subtree_max_ms = max(flip_subtree_ms);
   row.flip_subtree_nodes_median = cli::median(pick(subtree_nodes, true));
+  row.flip_subtree_nodes_max = max(pick(subtree_nodes, true));
   row.other_local_mean_ms = mean(pick(local_ms, false));
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
             << cli::fixed(row.local_mean_ms, 2) << " ms"
@@ -257,7 +260,10 @@ int aeg(cli::Args& args) {
     else if (a == "--kinetic-quadratic-up-to") c.kinetic_quadratic_up_to = args.unsigned_value(a);
     else if (a == "--events") c.events = args.unsigned_value(a);
     else if (a == "--rotating") c.rotating = args.unsigned_value(a);
-    else if (a == "--rotating-long") c.rotating_long = args.unsigned_value(a);
+    else if (a == "--rotating-long") {
+      const std::string& v = args.value(a);
+      c.rotating_long = v == "0" ? std::vector<std::size_t>{} : sizes_option("aeg", v, a, "segments");
+    }
     else if (a == "--repeats") {
       const std::size_t r = args.unsigned_value(a);
       if (r < 1 || r > 100) throw cli::Usage_error("kvd bench aeg: --repeats must be between 1 and 100");
@@ -281,8 +287,10 @@ int aeg(cli::Args& args) {
         kinetics.push_back(measure_kinetic(Segment_family::random, n, m, c.events, c, Crossings::quadratic));
   // The rotating scenes run over their whole span.
   constexpr std::size_t the_span = std::numeric_limits<std::size_t>::max();
-  for (const auto& [n, crossings] : {std::pair{c.rotating, Crossings::linear}, std::pair{c.rotating_long, Crossings::quadratic}})
-    if (n > 0) kinetics.push_back(measure_kinetic(Segment_family::rotating, n, n, the_span, c, crossings));
+  if (c.rotating > 0)
+    kinetics.push_back(measure_kinetic(Segment_family::rotating, c.rotating, c.rotating, the_span, c, Crossings::linear));
+  for (const std::size_t n : c.rotating_long)
+    kinetics.push_back(measure_kinetic(Segment_family::rotating, n, n, the_span, c, Crossings::quadratic));
 
   cli::write_atomically("bench aeg", c.out + "/aeg.csv", csv(statics, kinetics));
   cli::write_atomically("bench aeg", c.out + "/aeg-static.dat", static_plot_data(statics));

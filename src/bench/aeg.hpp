@@ -51,6 +51,7 @@ struct Kinetic_row {
   std::size_t flip_batches = 0, flip_whole = 0;  // flip_whole: their topmost nodes the local update replayed whole
   double flip_local_mean_ms = 0, flip_local_max_ms = 0, flip_subtree_mean_ms = 0, flip_subtree_max_ms = 0;
   double flip_nodes_median = 0, flip_subtree_nodes_median = 0, other_local_mean_ms = 0;
+  double flip_nodes_max = 0, flip_subtree_nodes_max = 0;
   bool subtree_run = false, rebuild_run = false;  // within --subtree-up-to and --rebuild-up-to
   bool same = true;  // the updates run had the same batches (times, failing certificates) and end in the same tree
   // Failures of `event` per unit of time, over m n (flips: over m); 0
@@ -65,7 +66,7 @@ struct Config {
   std::size_t subtree_up_to = 3200, rebuild_up_to = 800;  // the reference updates, up to these sizes
   std::size_t kinetic_quadratic_up_to = 200;              // kinetic runs of long segments, up to this size
   std::size_t rotating = 20;  // segments of the rotating scene (run over its span), 0: none
-  std::size_t rotating_long = 30;  // the same with long segments (k = Θ(n²)), 0: none
+  std::vector<std::size_t> rotating_long{30};  // the same with long segments (k = Θ(n²)), one scene per size
   std::size_t events = 50;
   int repeats = 3;
   std::string out = "bench-out";
