@@ -54,6 +54,7 @@ public:
   virtual ~Any_segment_kinetic() = default;
   virtual py::object advance() = 0;
   virtual std::size_t advance_to(const py::handle& t) = 0;
+  virtual bool set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) = 0;
   virtual py::list events() const = 0;
   virtual py::dict now() const = 0;
   virtual py::object next_event_time() = 0;
@@ -88,6 +89,20 @@ public:
     }
     return n;
   }
+  // A flight-plan change at `at` (after the batches up to it): the motion
+  // in the file format's forms, its numbers as text, int or Fraction.
+  bool set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) override {
+    const auto t = k_.time(from_rational<typename K::FT>(to_mpq(at)));
+    if (k_.compare(t, kin_.now()) < 0)
+      throw py::value_error("set_motion: at = " + k_.to_string(t) + " is before the run's now, " +
+                            k_.to_string(kin_.now()));
+    const py::object text = py::module_::import("json").attr("dumps")(motion, py::arg("default") = py::module_::import("builtins").attr("str"));
+    const segments::Segment_motion m = segments::read_segment_motion(text.cast<std::string>(), "set_motion");
+    advance_to(at);
+    const bool changed = kin_.set_motion(segment, m);
+    ++motion_changes_;
+    return changed;
+  }
   py::list events() const override {
     py::list out;
     for (const auto& b : batches_) out.append(b);
@@ -110,6 +125,7 @@ public:
     py::dict d;
     d["batches"] = batches_.size();
     d["failures"] = failures_;
+    d["motion_changes"] = motion_changes_;
     d["certificates"] = kin_.certificates();
     d["validations"] = kin_.validations();
     d["validation_failures"] = kin_.validation_failures();
@@ -143,7 +159,7 @@ private:
 
   K k_;
   Kinetic kin_;
-  std::size_t max_events_, failures_ = 0;
+  std::size_t max_events_, failures_ = 0, motion_changes_ = 0;
   std::optional<typename K::Time> until_;
   std::vector<py::dict> batches_;
 };
@@ -194,6 +210,13 @@ void bind_segments(py::module_& m) {
            "were processed, or the next batch is after `until`.")
       .def("advance_to", &Any_segment_kinetic::advance_to, py::arg("t"),
            "Processes every batch at a time <= t and moves to t; how many.")
+      .def("set_motion", &Any_segment_kinetic::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
+           "A flight-plan change: the batches up to `at` first, then the segment moves by `motion` from there on,\n"
+           "given as SEGMENT_FORMAT.md's motion object ({'translation': [x, y]}, {'matrix': ...} or\n"
+           "{'endpoints': ...}; None: static), numbers as text, int or Fraction, polynomials in t as lists of\n"
+           "coefficients. It must keep the segment where it is at `at`. Only the certificates naming the segment\n"
+           "are decided again (Lemma 3.1); whether the tree changed. ValueError (SceneError for a bad motion,\n"
+           "naming its place) otherwise.")
       .def_property_readonly("events", &Any_segment_kinetic::events, "The batches processed so far.")
       .def_property_readonly("now", &Any_segment_kinetic::now)
       .def_property_readonly("next_event_time", &Any_segment_kinetic::next_event_time)

@@ -19,11 +19,12 @@ public:
   using Json_reader::Json_reader;
 
   Segment_scene read(const Json_value& doc, const Segment_load_options& options) const;
+  // `at`: the motion's JSON place, "" for a document of its own.
+  Segment_motion read_motion(const Json_value& v, const std::string& at) const;
 
 private:
   Point3 rest_point(const Json_value& v, const std::string& at) const;
   Motion_point3 point3(const Json_value& v, const std::string& at) const;
-  Segment_motion read_motion(const Json_value& v, const std::string& at) const;
   Segment read_segment(const Json_value& v, const std::string& at) const;
   void read_priority(const Json_value& v, const std::string& at, Segment_scene& s) const;
   void check_geometry(const Segment_scene& s) const;
@@ -46,8 +47,9 @@ Motion_point3 Reader::point3(const Json_value& v, const std::string& at) const {
 Segment_motion Reader::read_motion(const Json_value& v, const std::string& at) const {
   Segment_motion m;
   if (v.kind == Kind::null) return m;
-  expect_object(v, at, {"translation", "matrix", "endpoints"}, {});
-  if (v.members.size() != 1) fail(at, "expected exactly one of \"translation\", \"matrix\", \"endpoints\"");
+  const std::string self = at.empty() ? "/" : at;
+  expect_object(v, self, {"translation", "matrix", "endpoints"}, {});
+  if (v.members.size() != 1) fail(self, "expected exactly one of \"translation\", \"matrix\", \"endpoints\"");
   const auto& [key, value] = v.members.front();
   const std::string here = at + "/" + key;
   if (key == "translation") {
@@ -166,13 +168,21 @@ Segment_scene Reader::read(const Json_value& doc, const Segment_load_options& op
   return s;
 }
 
-}  // namespace
-
-Segment_scene read_segments(const std::string& text, const std::string& source, const Segment_load_options& options) {
+Json_value parsed(const std::string& text, const std::string& source) {
   Json_value doc;
   std::string error;
   if (!scene::parse_json(text, doc, error)) throw scene::Scene_error(source + ": " + error);
-  return Reader(source).read(doc, options);
+  return doc;
+}
+
+}  // namespace
+
+Segment_scene read_segments(const std::string& text, const std::string& source, const Segment_load_options& options) {
+  return Reader(source).read(parsed(text, source), options);
+}
+
+Segment_motion read_segment_motion(const std::string& text, const std::string& source) {
+  return Reader(source).read_motion(parsed(text, source), "");
 }
 
 Segment_scene load_segments(const std::string& path, const Segment_load_options& options) {

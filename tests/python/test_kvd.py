@@ -181,3 +181,42 @@ def test_segment_bad_input_raises_value_errors():
         kvd.KineticSegments(s, kernel="quad")
     with pytest.raises(ValueError, match="update"):
         kvd.KineticSegments(s, update="reinsert")
+
+
+def test_segment_set_motion_stops_the_sinker():
+    # over-endpoint.json: the sinker, from (3, 4) to (6, 1), moves down by t
+    # and passes over the floor's endpoint (4, 0) at t = 3 (an edge event).
+    # Stopped at 1/2 (a constant translation, where it is then), nothing fails
+    # any more and the tree stays the one at 1/2.
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    moving = kvd.KineticSegments(s)
+    assert [b["time"] for b in iter(moving.advance, None)] == ["3"]
+    k = kvd.KineticSegments(s)
+    at = Fraction(1, 2)
+    assert not k.set_motion(1, {"translation": [0, Fraction(-1, 2)]}, at)
+    assert k.now["time"] == "1/2"
+    assert k.advance() is None
+    assert k.tree["tree"] == kvd.build_segments(s, at)["tree"]
+    assert k.summary["motion_changes"] == 1 and k.summary["validation_failures"] == []
+    # Moving down again from 3/4 (by 1/4 - t), it meets the endpoint a
+    # quarter later than it would have.
+    assert not k.set_motion(1, {"translation": ["0", ["1/4", "-1"]]}, Fraction(3, 4))
+    assert [b["time"] for b in iter(k.advance, None)] == ["13/4"]
+    assert k.summary["motion_changes"] == 2 and k.summary["validation_failures"] == []
+
+
+def test_segment_set_motion_rejects_bad_motions():
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    k = kvd.KineticSegments(s)
+    with pytest.raises(ValueError, match="no segment 5"):
+        k.set_motion(5, None, Fraction(1, 2))
+    with pytest.raises(ValueError, match="set_motion: /translation: "):
+        k.set_motion(1, {"translation": [0]}, Fraction(1, 2))
+    with pytest.raises(ValueError, match="set_motion: /: expected exactly one of"):
+        k.set_motion(1, {}, Fraction(1, 2))
+    # Back to its rest position at 1/2: a jump.
+    with pytest.raises(ValueError, match="away from where it is now"):
+        k.set_motion(1, None, Fraction(1, 2))
+    with pytest.raises(ValueError, match="before the run's now"):
+        k.set_motion(1, {"translation": [0, Fraction(-1, 4)]}, Fraction(1, 4))
+    assert k.summary["motion_changes"] == 0

@@ -25,6 +25,12 @@ Segment_scene read_segments(const std::string& text, const std::string& source,
                             const Segment_load_options& options = {});
 // The same from a file, or from standard input for "-" (scene::read_input).
 Segment_scene load_segments(const std::string& path, const Segment_load_options& options = {});
+// A segment's motion alone, as a JSON text in the format's `motion` forms
+// (SEGMENT_FORMAT.md; null: static), for a flight-plan change: rejections
+// name `source` and the JSON place ("/translation/1"), as read_segments does.
+// Whether the motion keeps the segment where it is is the run's to check
+// (Kinetic_segment_bsp::set_motion).
+Segment_motion read_segment_motion(const std::string& text, const std::string& source);
 // The scene as a `kvd-segments/1` document, numbers as exact strings;
 // read_segments(write_segments(s)) == s.
 std::string write_segments(const Segment_scene& s);
