@@ -187,6 +187,35 @@ TEST_CASE("a flip remakes the turning segment's cuts and moves the subtrees besi
   CHECK(f.local.nodes_rebuilt < f.other.nodes_rebuilt);
 }
 
+// A flip at the same instant as a vertex event elsewhere: s4's endpoint 0
+// passes s5's at x = 20 when s3 turns vertical, at t = 0. The turning
+// segment comes last, so its topmost nodes are its first cuts, in cells the
+// other event does not reach: they are remade at the frontier all the same,
+// and the batch ends in the subtree update's tree and certificates.
+TEST_CASE("a flip beside another event is remade at the frontier", "[segments][kinetic]") {
+  const auto s = scene_of({fixed(10, 0, 12, 1), fixed(14, 2, 16, 3), fixed(-3, 1, 3, 1),
+                           moving(linear(0, -1), linear(-2, 0), linear(0, 1), linear(2, 0)),
+                           moving(linear(20, 1), linear(5, 0), linear(22, 1), linear(5, 0)), fixed(20, 8, 25, 9)},
+                          {0, 1, 2, 4, 5, 3}, -1, 1);
+  const Exact_kernel k;
+  Kinetic_segment_bsp<Exact_kernel> local(k, s, true), subtree(k, s, true, Segment_update::subtree);
+  const auto l = run(local, 10), r = run(subtree, 10);
+  REQUIRE(l.size() == 1);
+  REQUIRE(r.size() == 1);
+  CHECK(l[0].time.to_string() == "0");
+  CHECK(l[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  const Segment_certificate_key elsewhere{Segment_certificate_key::Kind::x_order, Site_point::endpoint(8),
+                                          Site_point::endpoint(10)};
+  CHECK(std::find(l[0].failing.begin(), l[0].failing.end(), elsewhere) != l[0].failing.end());
+  CHECK(l[0].frontier_replays >= 2);
+  CHECK(l[0].subtree_replays == 0);
+  CHECK(l[0].nodes_rebuilt < r[0].nodes_rebuilt);
+  CHECK(local.tree().text() == subtree.tree().text());
+  CHECK(local.certificate_list() == subtree.certificate_list());
+  CHECK(local.validation_failures().empty());
+  CHECK(subtree.validation_failures().empty());
+}
+
 // A flight-plan change at the instant of a flip that turns the segment back:
 // the x orders of its points change again, as at the flip, and set_motion
 // goes through the same update (proofs/segment-local-update.md, "Flips").
@@ -218,8 +247,9 @@ TEST_CASE("a flight-plan change at a flip turns the segment back", "[segments][k
 }
 
 // Long rotating segments (half the box): each turns through vertical while
-// crossing others. Every flip batch there is flips alone, and the local
-// update remakes its topmost nodes as frontier nodes, none replayed whole;
+// crossing others. Below every topmost node of their flip batches only flips
+// fail, and the local update remakes those nodes as frontier nodes, none
+// replayed whole;
 // the tree in force equals a fresh build between every two batches.
 TEST_CASE("long rotating segments: every flip is remade at the frontier, every batch a fresh build's tree",
           "[segments][kinetic]") {

@@ -57,7 +57,7 @@ const char* const aeg_help =
     "            scene of --rotating segments (default 20, 0: none) turning\n"
     "            through vertical (segments-rotating, flip events) over its\n"
     "            whole span, and one of long segments for each --rotating-long\n"
-    "            size (default 30, 0: none; --crossings quadratic; no rebuild:\n"
+    "            size (default 30,60, 0: none; --crossings quadratic; no rebuild:\n"
     "            thousands of batches): the exact kinetic BSP without\n"
     "            validation, its\n"
     "            local update, its subtree update (up to --subtree-up-to\n"
@@ -148,7 +148,7 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   Kinetic local(k, s, false, segments::Segment_update::local);
   std::optional<Kinetic> subtree, rebuild;
   row.subtree_run = n <= c.subtree_up_to;
-  // The long rotating scene has thousands of batches: no rebuild there.
+  // The long rotating scenes have thousands of batches: no rebuild there.
   row.rebuild_run = n <= c.rebuild_up_to && !(family == Segment_family::rotating && crossings == Crossings::quadratic);
   {
     const segments::Cylindrical_bsp tree = local.tree();

@@ -66,7 +66,7 @@ struct Config {
   std::size_t subtree_up_to = 3200, rebuild_up_to = 800;  // the reference updates, up to these sizes
   std::size_t kinetic_quadratic_up_to = 200;              // kinetic runs of long segments, up to this size
   std::size_t rotating = 20;  // segments of the rotating scene (run over its span), 0: none
-  std::vector<std::size_t> rotating_long{30};  // the same with long segments (k = Θ(n²)), one scene per size
+  std::vector<std::size_t> rotating_long{30, 60};  // the same with long segments (k = Θ(n²)), one scene per size
   std::size_t events = 50;
   int repeats = 3;
   std::string out = "bench-out";

@@ -3,7 +3,8 @@
 // "Frontier replay"): when the signs that changed at the topmost node u are
 // those of one segment's steps, only those steps are decided again below u,
 // down to the leaves of the tree before that segment, and only the subtrees
-// there whose arrivals changed are replayed.
+// there whose arrivals changed are replayed; and the frontier nodes of a
+// flip (flip_frontiers).
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -143,9 +144,56 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
   return roots;
 }
 
+// A flip changes only signs decided in the cells of the turning segment's
+// cuts (Bsp_builder::walk). A topmost node that is the first cut of a
+// turning segment on its path (one of its frontier nodes: a leaf of the tree
+// before it), with no other failing key below it, is remade as the frontier
+// replay remakes one: the segment's cuts again, and the later segments' old
+// subtrees moved where their arrivals did not change (section 3.1.4).
+// Another failure elsewhere in the batch does not matter: the remake reads
+// only the node's log and the signs below it.
+template <class K>
+std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(const std::vector<Failing>& failing,
+                                                                          const std::vector<std::int32_t>& nodes) const {
+  std::set<std::uint32_t> turning;
+  for (const auto& f : failing)
+    if (event_of(f.first, scene_.rank) == Segment_event::flip) turning.insert(f.first.p.a / 2);
+  const auto parent = [&](std::int32_t n) { return tree_.nodes[static_cast<std::size_t>(n)].parent; };
+  // The topmost failing node on n's path.
+  const auto topmost = [&](std::int32_t n) {
+    std::int32_t top = n;
+    for (std::int32_t a = parent(n); a >= 0; a = parent(a))
+      if (std::binary_search(nodes.begin(), nodes.end(), a)) top = a;
+    return static_cast<std::size_t>(top);
+  };
+  std::set<std::size_t> other;  // topmost nodes with another failing key below
+  for (const auto& [key, at] : failing) {
+    const bool flip = key.kind == Key::Kind::x_order && std::any_of(turning.begin(), turning.end(), [&](std::uint32_t s) {
+                        return key.p.on(s) && key.q.on(s);
+                      });
+    if (!flip)
+      for (const std::int32_t n : at)
+        if (n >= 0) other.insert(topmost(n));
+  }
+  std::map<std::size_t, std::size_t> out;
+  for (const std::int32_t n : nodes) {
+    const auto u = static_cast<std::size_t>(n);
+    if (topmost(n) != u) continue;
+    const Bsp_node& node = tree_.nodes[u];
+    const std::size_t r = cut_rank(node, scene_.rank);
+    if (other.count(u) || r == scene_.rank.size() || !turning.count(static_cast<std::uint32_t>(scene_.priority_order[r])))
+      continue;
+    if (node.parent >= 0 && cut_rank(tree_.nodes[static_cast<std::size_t>(node.parent)], scene_.rank) == r) continue;
+    out.emplace(u, r);
+  }
+  return out;
+}
+
 #define KVD_INSTANTIATE_FRONTIER_REPLAY(K)                                                               \
   template std::optional<std::vector<Kinetic_segment_bsp<K>::Replay_root>> Kinetic_segment_bsp<K>::frontier_replay( \
-      std::size_t, const std::vector<Kinetic_segment_bsp<K>::Failing>&, const std::vector<std::int32_t>&);
+      std::size_t, const std::vector<Kinetic_segment_bsp<K>::Failing>&, const std::vector<std::int32_t>&); \
+  template std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(                   \
+      const std::vector<Kinetic_segment_bsp<K>::Failing>&, const std::vector<std::int32_t>&) const;
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_FRONTIER_REPLAY)
 
 }  // namespace kvd::segments

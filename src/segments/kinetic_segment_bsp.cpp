@@ -380,30 +380,8 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   nodes.erase(std::remove(nodes.begin(), nodes.end(), -1), nodes.end());
-  // A batch of flips alone (every failing key the x order of two points of
-  // a turning segment) changes only signs decided in the cells of the
-  // turning segments' cuts (Bsp_builder::walk). A topmost node that is the
-  // first cut of a turning segment on its path (one of its frontier nodes: a
-  // leaf of the tree before it) is remade as the frontier replay remakes
-  // one: the segment's cuts again, and the later segments' old subtrees
-  // moved where their arrivals did not change (section 3.1.4; proofs/
-  // segment-local-update.md, "Flips").
-  std::set<std::uint32_t> turning;
-  for (const auto& f : failing)
-    if (event_of(f.first, scene_.rank) == Segment_event::flip) turning.insert(f.first.p.a / 2);
-  const bool flips_alone = std::all_of(failing.begin(), failing.end(), [&](const Failing& f) {
-    return f.first.kind == Segment_certificate_key::Kind::x_order &&
-           std::any_of(turning.begin(), turning.end(), [&](std::uint32_t s) { return f.first.p.on(s) && f.first.q.on(s); });
-  });
-  const auto flip_frontier = [&](std::size_t u) -> std::optional<std::size_t> {
-    if (update_ != Segment_update::local || !flips_alone) return std::nullopt;
-    const Bsp_node& node = tree_.nodes[u];
-    const std::size_t r = cut_rank(node, scene_.rank);
-    if (r == scene_.rank.size() || !turning.count(static_cast<std::uint32_t>(scene_.priority_order[r]))) return std::nullopt;
-    if (node.parent >= 0 && cut_rank(tree_.nodes[static_cast<std::size_t>(node.parent)], scene_.rank) == r)
-      return std::nullopt;
-    return r;
-  };
+  const std::map<std::size_t, std::size_t> flips =
+      update_ == Segment_update::local ? flip_frontiers(failing, nodes) : std::map<std::size_t, std::size_t>{};
   std::vector<Replay_root> roots;
   for (const std::int32_t n : nodes) {
     bool below = false;
@@ -414,7 +392,7 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
     const auto u = static_cast<std::size_t>(n);
     std::optional<std::vector<Replay_root>> frontier;
     if (update_ == Segment_update::local) frontier = frontier_replay(u, failing, nodes);
-    if (const auto r = flip_frontier(u); !frontier && r) frontier = std::vector<Replay_root>{{u, r}};
+    if (const auto r = flips.find(u); !frontier && r != flips.end()) frontier = std::vector<Replay_root>{{u, r->second}};
     ++(frontier ? b.frontier_replays : b.subtree_replays);
     if (frontier) roots.insert(roots.end(), frontier->begin(), frontier->end());
     else roots.push_back({u, std::nullopt});

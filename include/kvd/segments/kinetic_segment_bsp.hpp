@@ -24,10 +24,11 @@
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
 // cells of the segment's own cuts, and the update is the paper's (section
-// 3.1.4) update of the subtrees of the cells it crosses, not O(1): in a batch
-// of flips alone, a topmost node that is the turning segment's first cut on
-// its path is remade as a frontier node (its cuts again, old subtrees moved
-// where their arrivals did not change), one deeper is replayed. This is
+// 3.1.4) update of the subtrees of the cells it crosses, not O(1): a topmost
+// node that is the turning segment's first cut on its path, with only flip
+// failures below it, is remade as a frontier node (its cuts again, old
+// subtrees moved where their arrivals did not change; flip_frontiers), one
+// deeper is replayed. This is
 // not the paper's constant-size surgery (LeftShave and the splits of
 // sections 3.1.1-3.1.4), though the fit of old subtrees to new cells follows
 // the moved walls as LeftShave does.
@@ -180,6 +181,13 @@ private:
   // nodes to replay, or none when it does not apply (and nothing changed).
   std::optional<std::vector<Replay_root>> frontier_replay(std::size_t u, const std::vector<Failing>& failing,
                                                           const std::vector<std::int32_t>& nodes);
+  // The topmost failing nodes (of `nodes`, sorted) that a flip remakes as
+  // frontier nodes, with the rank of the turning segment: those that are its
+  // first cut on their path and below which every failing key is the x
+  // order of two points of a turning segment (proofs/segment-local-update.md,
+  // "Flips").
+  std::map<std::size_t, std::size_t> flip_frontiers(const std::vector<Failing>& failing,
+                                                    const std::vector<std::int32_t>& nodes) const;
   void rebuild();
   // Compares the tree in force with a fresh build strictly between now and
   // t. Floating-point kernels: a stale tree is replaced by the fresh build,
