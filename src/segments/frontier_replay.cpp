@@ -158,6 +158,7 @@ std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(const 
   std::set<std::uint32_t> turning;
   for (const auto& f : failing)
     if (event_of(f.first, scene_.rank) == Segment_event::flip) turning.insert(f.first.p.a / 2);
+  if (turning.empty()) return {};
   const auto parent = [&](std::int32_t n) { return tree_.nodes[static_cast<std::size_t>(n)].parent; };
   // The topmost failing node on n's path.
   const auto topmost = [&](std::int32_t n) {
@@ -167,12 +168,13 @@ std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(const 
     return static_cast<std::size_t>(top);
   };
   std::set<std::size_t> other;  // topmost nodes with another failing key below
-  for (const auto& [key, at] : failing) {
+  for (const Failing& f : failing) {
+    const Key& key = f.first;  // not a structured binding: lambdas capture it
     const bool flip = key.kind == Key::Kind::x_order && std::any_of(turning.begin(), turning.end(), [&](std::uint32_t s) {
                         return key.p.on(s) && key.q.on(s);
                       });
     if (!flip)
-      for (const std::int32_t n : at)
+      for (const std::int32_t n : f.second)
         if (n >= 0) other.insert(topmost(n));
   }
   std::map<std::size_t, std::size_t> out;
