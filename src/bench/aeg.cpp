@@ -224,15 +224,16 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
     return out;
   };
   const std::vector<double> flip_ms = pick(local_ms, true), flip_subtree_ms = pick(subtree_ms, true);
+  const std::vector<double> flip_nodes = pick(nodes, true), flip_subtree_nodes = pick(subtree_nodes, true);
   row.flip_batches = flips.size();
   row.flip_local_mean_ms = mean(flip_ms);
   row.flip_local_max_ms = max(flip_ms);
-  row.flip_nodes_median = cli::median(pick(nodes, true));
-  row.flip_nodes_max = max(pick(nodes, true));
+  row.flip_nodes_median = cli::median(flip_nodes);
+  row.flip_nodes_max = max(flip_nodes);
   row.flip_subtree_mean_ms = mean(flip_subtree_ms);
   row.flip_subtree_max_ms = max(flip_subtree_ms);
-  row.flip_subtree_nodes_median = cli::median(pick(subtree_nodes, true));
-  row.flip_subtree_nodes_max = max(pick(subtree_nodes, true));
+  row.flip_subtree_nodes_median = cli::median(flip_subtree_nodes);
+  row.flip_subtree_nodes_max = max(flip_subtree_nodes);
   row.other_local_mean_ms = mean(pick(local_ms, false));
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
             << cli::fixed(row.local_mean_ms, 2) << " ms"
