@@ -54,7 +54,8 @@ const char* const simulate_help =
     "                    stops at the collision with a message and status 0\n"
     "  --certificates S  reduced (default): the thesis's set (thesis 6.4);\n"
     "                    full: every sign the construction evaluated (implies\n"
-    "                    --update rebuild, the build being what evaluates them)\n"
+    "                    --update rebuild, the build being what evaluates them);\n"
+    "                    segment scenes: kept (default) or paper, below\n"
     "  --queue Q         tree (default): the kinetic priority queue in the KVD\n"
     "                    (thesis 6.5); heap: a mutable pairing heap\n"
     "  --kernel K        exact (default); double or mpfr:BITS group the failures\n"
@@ -103,8 +104,14 @@ const char* const simulate_help =
     "topmost node where a failing certificate was decided (--update local, the\n"
     "default; a flip replays the cells the turning segment cuts) or by building\n"
     "the whole tree again\n"
-    "(--update rebuild). Takes --events, --until, --validate every|none,\n"
-    "--update, --kernel, --epsilon, --no-filter, --list, --json\n"
+    "(--update rebuild). With --certificates paper (exact kernel; the\n"
+    "default is kept), the run holds only seed 003's own set instead: one\n"
+    "certificate per transient node, per endpoint (its neighbours above and\n"
+    "below) and per segment (a flip), each a few signs with exact failure\n"
+    "times; the tree is built again after each batch (the paper's surgery is\n"
+    "not implemented), and --list names the certificates that fail. Takes\n"
+    "--events, --until, --validate every|none, --update, --certificates,\n"
+    "--kernel, --epsilon, --no-filter, --list, --json\n"
     "(failures_by_event, changed_batches_by_event, batches, validations,\n"
     "update_ms, nodes_rebuilt, batch_list, recovery). In the floating-point\n"
     "kernels a construction whose signs contradict each other is built again\n"
@@ -350,6 +357,7 @@ int simulate(Args& args) {
   std::string kernel = "exact";
   bool list = false, filter = true;
   std::optional<kinetic::Update> update;
+  std::optional<std::string> certificates;
   bool subtree = false;
   std::vector<std::string> triangle_only;  // flags a segment scene refuses
   while (!args.done()) {
@@ -358,7 +366,7 @@ int simulate(Args& args) {
       std::cout << simulate_help;
       return 0;
     }
-    for (const char* f : {"--trace", "--certificates", "--queue", "--upkeep", "--collisions"})
+    for (const char* f : {"--trace", "--queue", "--upkeep", "--collisions"})
       if (a == f) triangle_only.push_back(a);
     if (a == "--events") o.max_events = args.unsigned_value(a);
     else if (a == "--kernel") kernel = args.value(a);
@@ -367,10 +375,7 @@ int simulate(Args& args) {
     else if (a == "--list") list = true;
     else if (a == "--no-filter") filter = false;
     else if (a == "--until") o.until = exact_option("simulate", a, args.value(a));
-    else if (a == "--certificates")
-      o.certificates = choice_option<kinetic::Certificate_set>(
-          "simulate", a, args.value(a),
-          {{"reduced", kinetic::Certificate_set::reduced}, {"full", kinetic::Certificate_set::full}});
+    else if (a == "--certificates") certificates = args.value(a);  // read once the scene's format is known
     else if (a == "--queue")
       o.queue = choice_option<kinetic::Queue_kind>(
           "simulate", a, args.value(a), {{"tree", kinetic::Queue_kind::tree}, {"heap", kinetic::Queue_kind::heap}});
@@ -392,12 +397,14 @@ int simulate(Args& args) {
     else if (a == "--validate") o.validate = validation_option("simulate", args.value(a));
     else if (!sa.take(args, a)) args.unknown(a);
   }
-  if (o.certificates == kinetic::Certificate_set::full && update && update != kinetic::Update::rebuild)
-    throw Usage_error("kvd simulate: the full certificate set needs --update rebuild");
-  o.update = update.value_or(o.certificates == kinetic::Certificate_set::full ? kinetic::Update::rebuild
-                                                                            : kinetic::Update::local);
   const std::string text = sa.read_text("simulate");
   if (segments::scene_format(text) == "kvd-segments/1") {
+    const bool paper = certificates && choice_option<bool>("simulate", "--certificates", *certificates,
+                                                           {{"kept", false}, {"paper", true}});
+    if (paper && kernel != "exact")
+      throw Usage_error("kvd simulate: --certificates paper runs in the exact kernel only");
+    if (paper && (update || subtree))
+      throw Usage_error("kvd simulate: --certificates paper builds the tree again after each batch; it takes no --update");
     if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
     refuse_triangle_flags("simulate", triangle_only);
     if (o.validate == kinetic::Validation::end)
@@ -408,8 +415,17 @@ int simulate(Args& args) {
                             {o.max_events, o.until, o.validate == kinetic::Validation::every, kernel, epsilon, filter, list,
                              subtree                               ? segments::Segment_update::subtree
                              : update == kinetic::Update::rebuild ? segments::Segment_update::rebuild
-                                                                  : segments::Segment_update::local});
+                                                                  : segments::Segment_update::local,
+                             paper});
   }
+  if (certificates)
+    o.certificates = choice_option<kinetic::Certificate_set>(
+        "simulate", "--certificates", *certificates,
+        {{"reduced", kinetic::Certificate_set::reduced}, {"full", kinetic::Certificate_set::full}});
+  if (o.certificates == kinetic::Certificate_set::full && update && update != kinetic::Update::rebuild)
+    throw Usage_error("kvd simulate: the full certificate set needs --update rebuild");
+  o.update = update.value_or(o.certificates == kinetic::Certificate_set::full ? kinetic::Update::rebuild
+                                                                            : kinetic::Update::local);
   if (subtree) throw Usage_error("kvd simulate: --update subtree: a triangle scene takes local, reinsert or rebuild");
   const scene::Scene s = sa.read_scene("simulate", text);
   if (o.until) require_in_span("simulate", "--until", *o.until, s);

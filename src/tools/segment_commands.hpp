@@ -25,9 +25,13 @@ struct Segment_run_options {
   bool filter = true;
   bool list = false;
   segments::Segment_update update = segments::Segment_update::local;
+  // The run on seed 003's certificate set (Aeg_kinetic_bsp) instead.
+  bool paper = false;
 };
 
 int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o);
+// The same with o.paper (src/tools/segment_simulate_paper.cpp).
+int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 
 struct Segment_certify_options {
   std::string out;

@@ -137,6 +137,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
 int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o) {
   const segments::Segment_scene s = sa.read_segments("simulate", text);
   if (o.until) require_in_span("simulate", "--until", *o.until, s.start, s.end);
+  if (o.paper) return segment_simulate_paper(sa, s, o);
   return with_kernel("simulate", o.kernel, [&](const auto& k) {
     require_representable(*sa.path, s, k);
     return run(k, sa, s, o);

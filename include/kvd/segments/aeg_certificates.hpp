@@ -40,6 +40,15 @@ struct Aeg_state {
 template <class K>
 Aeg_state aeg_state(const Segment_predicates<K>& pred, const typename K::Time& t);
 
+// The neighbours of endpoint e read off the tree b built at t: the floor and
+// the roof of the leaf that holds the points just beside e on the side away
+// from its segment (-1: none). The same as aeg_state's, in O(depth) instead
+// of O(n): that leaf's near wall is e's, so its floor and roof hold x(e) in
+// their x-ranges, and a segment between them and e would cross the leaf.
+template <class K>
+std::array<std::int64_t, 2> aeg_neighbours(const Cylindrical_bsp& b, const Segment_predicates<K>& pred,
+                                           const typename K::Time& t, std::size_t e);
+
 // The paper's certificates that fail from t0 to t1 (t0 < t1), `before` being
 // the tree just after t0 and `after` the one just after t1: the segments and
 // endpoints whose state differs, the transient nodes of `before` whose cell
