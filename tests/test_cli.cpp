@@ -593,6 +593,50 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
   CHECK(late.out.find("--time 9 is outside the scene's time span [0, 7/2]") != std::string::npos);
 }
 
+// The run on seed 003's own certificates: the same edge event of
+// over-endpoint.json, found by the certificate of the endpoint it passes
+// over; on a random scene the same changes of the tree at the same instants
+// as the kept run (tests/test_aeg_kinetic.cpp checks the trees); bad flags.
+TEST_CASE("kvd simulate --certificates paper runs a segment scene on the paper's certificates", "[cli][simulate][segments]") {
+  const std::string dir = std::string(KVD_SOURCE_DIR) + "/data/segments/";
+  const Run list = run("simulate " + dir + "over-endpoint.json --certificates paper --list");
+  REQUIRE(list.status == 0);
+  CHECK(list.out.find("t = 3 (3): endpoint s0.1; tree changed\n") != std::string::npos);
+  CHECK(list.out.find("failures:      1 (0 transient, 1 endpoint, 0 flip)") != std::string::npos);
+  const Run json = run("simulate " + dir + "over-endpoint.json --certificates paper --json --list");
+  REQUIRE(json.status == 0);
+  CHECK(json.out.find(R"("certificate_set": "paper", "segments": 2, "batches": 1, "failures": 1, )"
+                      R"("failures_by_kind": {"transient": 0, "endpoint": 1, "flip": 0}, "changed_batches": 1)") !=
+        std::string::npos);
+  CHECK(json.out.find(R"("validations": 1, "validation_failures": 0)") != std::string::npos);
+  CHECK(json.out.find(R"("failing": [{"kind": "endpoint", "of": "s0.1"}], "changed": true)") != std::string::npos);
+  // A flip fails the segment's certificate and the cell between its endpoints.
+  CHECK(run("simulate " + dir + "rotating-10.json --certificates paper --list --events 2").out.find(
+            "transient between s1.0 and s1.1; flip s1; tree changed") != std::string::npos);
+  // Up to t = 1/4 on 100 random segments, both runs change the tree in the same batches.
+  const auto field = [](const std::string& out, const std::string& name) {
+    const std::size_t at = out.find("\"" + name + "\": ");
+    return at == std::string::npos ? std::string() : out.substr(at, out.find(',', at) - at);
+  };
+  const Run paper = run("simulate " + dir + "random-100.json --certificates paper --until 1/4 --events 100000 --json"),
+            kept = run("simulate " + dir + "random-100.json --until 1/4 --events 100000 --json");
+  REQUIRE(paper.status == 0);
+  REQUIRE(kept.status == 0);
+  CHECK(!field(paper.out, "changed_batches").empty());
+  for (const char* f : {"batches", "changed_batches", "time_reached_exact", "nodes"}) CHECK(field(paper.out, f) == field(kept.out, f));
+  for (const auto& [flags, message] :
+       {std::pair{"--certificates paper --kernel double", "--certificates paper runs in the exact kernel only"},
+        std::pair{"--certificates paper --update subtree", "--certificates paper builds the tree again after each batch"},
+        std::pair{"--certificates reduced", "--certificates expects kept or paper"}}) {
+    const Run bad = run("simulate " + dir + "over-endpoint.json " + flags, "2>&1");
+    CHECK(bad.status == 2);
+    CHECK(bad.out.find(message) != std::string::npos);
+  }
+  const Run triangles = run("simulate " + std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json --certificates paper", "2>&1");
+  CHECK(triangles.status == 2);
+  CHECK(triangles.out.find("--certificates expects reduced or full") != std::string::npos);
+}
+
 TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point one, or refuses bad input",
           "[cli][diff][segments]") {
   const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/segments/over-endpoint.json";
