@@ -2,12 +2,13 @@
 // node (its cell collapses), one per endpoint (the segment just above or just
 // below it changes) and one per segment (it turns through vertical).
 //
-// The kinetic BSP here keeps a larger set, every sign its construction
-// decides (kinetic_segment_bsp.hpp), because its updates replay that
-// construction. The paper's set is computed here from a tree and an instant:
-// to count it next to ours (kvd bench aeg), and to check the paper's claim
-// that one of its certificates fails wherever the tree changes
-// (proofs/segment-certificates.md, tests/test_aeg_certificates.cpp).
+// The kinetic BSP with local updates keeps a larger set, every sign its
+// construction decides (kinetic_segment_bsp.hpp), because its updates replay
+// that construction. The paper's set is computed here from a tree and an
+// instant: to count it next to ours (kvd bench aeg), and to check the
+// paper's claim that one of its certificates fails wherever the tree changes
+// (proofs/segment-certificates.md, tests/test_aeg_certificates.cpp). A run
+// on this set alone, with exact failure times, is aeg_kinetic_bsp.hpp.
 #pragma once
 
 #include <array>
