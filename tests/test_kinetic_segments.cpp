@@ -127,7 +127,9 @@ TEMPLATE_TEST_CASE("a segment turning vertical: a flip event", "[segments][kinet
   REQUIRE(batches.size() == 1);
   CHECK(k.to_double(batches[0].time) == Approx(0.0).margin(1e-12));
   CHECK(batches[0].changed);
-  CHECK(batches[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  // The flip: the x order of s0's endpoints, and that of its crossing with s1
+  // against each of them, all part of it (event_in_batch).
+  CHECK(batches[0].events == std::array<std::size_t, 4>{0, 0, 0, 3});
   CHECK(kin.validation_failures().empty());
 }
 
@@ -151,7 +153,7 @@ Flip_batches flip_batches(std::vector<std::size_t> order, Segment_update other) 
   const auto l = run(local, 10), r = run(reference, 10);
   REQUIRE(l.size() == 1);
   REQUIRE(r.size() == 1);
-  CHECK(l[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  CHECK(l[0].events == std::array<std::size_t, 4>{0, 0, 0, 3});  // as in the test above
   CHECK(l[0].changed);
   CHECK(local.tree().text() == reference.tree().text());
   CHECK(local.certificate_list() == reference.certificate_list());
@@ -203,7 +205,8 @@ TEST_CASE("a flip beside another event is remade at the frontier", "[segments][k
   REQUIRE(l.size() == 1);
   REQUIRE(r.size() == 1);
   CHECK(l[0].time.to_string() == "0");
-  CHECK(l[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  // The flip's three failures, and the vertex event of s4.0 and s5.0.
+  CHECK(l[0].events == std::array<std::size_t, 4>{1, 0, 0, 3});
   const Segment_certificate_key elsewhere{Segment_certificate_key::Kind::x_order, Site_point::endpoint(8),
                                           Site_point::endpoint(10)};
   CHECK(std::find(l[0].failing.begin(), l[0].failing.end(), elsewhere) != l[0].failing.end());
@@ -229,7 +232,7 @@ TEST_CASE("a flight-plan change at a flip turns the segment back", "[segments][k
   const std::string before = kin.tree().text();
   const auto batches = kin.advance_to(Exact_time(0));
   REQUIRE(batches.size() == 1);
-  REQUIRE(batches[0].events[static_cast<std::size_t>(Segment_event::flip)] == 1);
+  REQUIRE(batches[0].events == std::array<std::size_t, 4>{0, 0, 0, 3});
   REQUIRE(kin.tree().text() != before);
   // From (t, -2) to (-t, 2): where it is at t = 0, turning the other way.
   const Segment_motion back = endpoints_motion(linear(0, 1), linear(-2, 0), linear(0, -1), linear(2, 0));

@@ -155,9 +155,9 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
 template <class K>
 std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(const std::vector<Failing>& failing,
                                                                           const std::vector<std::int32_t>& nodes) const {
-  std::set<std::uint32_t> turning;
-  for (const auto& f : failing)
-    if (event_of(f.first, scene_.rank) == Segment_event::flip) turning.insert(f.first.p.a / 2);
+  std::vector<Key> keys;
+  for (const auto& f : failing) keys.push_back(f.first);
+  const std::vector<std::size_t> turning = turning_segments(keys);
   if (turning.empty()) return {};
   const auto parent = [&](std::int32_t n) { return tree_.nodes[static_cast<std::size_t>(n)].parent; };
   // The topmost failing node on n's path.
@@ -169,11 +169,7 @@ std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(const 
   };
   std::set<std::size_t> other;  // topmost nodes with another failing key below
   for (const Failing& f : failing) {
-    const Key& key = f.first;  // not a structured binding: lambdas capture it
-    const bool flip = key.kind == Key::Kind::x_order && std::any_of(turning.begin(), turning.end(), [&](std::uint32_t s) {
-                        return key.p.on(s) && key.q.on(s);
-                      });
-    if (!flip)
+    if (!part_of_flip(f.first, turning))
       for (const std::int32_t n : f.second)
         if (n >= 0) other.insert(topmost(n));
   }
@@ -183,7 +179,8 @@ std::map<std::size_t, std::size_t> Kinetic_segment_bsp<K>::flip_frontiers(const 
     if (topmost(n) != u) continue;
     const Bsp_node& node = tree_.nodes[u];
     const std::size_t r = cut_rank(node, scene_.rank);
-    if (other.count(u) || r == scene_.rank.size() || !turning.count(static_cast<std::uint32_t>(scene_.priority_order[r])))
+    if (other.count(u) || r == scene_.rank.size() ||
+        !std::binary_search(turning.begin(), turning.end(), scene_.priority_order[r]))
       continue;
     if (node.parent >= 0 && cut_rank(tree_.nodes[static_cast<std::size_t>(node.parent)], scene_.rank) == r) continue;
     out.emplace(u, r);

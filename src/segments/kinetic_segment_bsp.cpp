@@ -297,13 +297,14 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
     if (!stale(queue_.front())) {
       const auto& key = queue_.front().key;
       b.failing.push_back(key);
-      ++b.events[static_cast<std::size_t>(event_of(key, scene_.rank))];
       failing.emplace_back(key, certs_.at(key).nodes);
     }
     pop();
   }
   std::sort(b.failing.begin(), b.failing.end());
   b.failing.erase(std::unique(b.failing.begin(), b.failing.end()), b.failing.end());
+  const std::vector<std::size_t> turning = turning_segments(b.failing);
+  for (const auto& key : b.failing) ++b.events[static_cast<std::size_t>(event_in_batch(key, scene_.rank, turning))];
   const auto start = std::chrono::steady_clock::now();
   now_ = t;
   // The failing certificates go first: those decided again get a new failure time.

@@ -117,6 +117,27 @@ Segment_event event_of(const Segment_certificate_key& k, const std::vector<std::
   return Segment_event::edge;
 }
 
+std::vector<std::size_t> turning_segments(const std::vector<Segment_certificate_key>& failing) {
+  std::vector<std::size_t> out;
+  for (const auto& k : failing)
+    if (k.kind == Segment_certificate_key::Kind::x_order && k.p.kind == Site_point::Kind::endpoint &&
+        k.q.kind == Site_point::Kind::endpoint && k.p.a / 2 == k.q.a / 2)
+      out.push_back(k.p.a / 2);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+bool part_of_flip(const Segment_certificate_key& k, const std::vector<std::size_t>& turning) {
+  return k.kind == Segment_certificate_key::Kind::x_order &&
+         std::any_of(turning.begin(), turning.end(), [&](std::size_t s) { return k.p.on(s) && k.q.on(s); });
+}
+
+Segment_event event_in_batch(const Segment_certificate_key& k, const std::vector<std::size_t>& rank,
+                             const std::vector<std::size_t>& turning) {
+  return part_of_flip(k, turning) ? Segment_event::flip : event_of(k, rank);
+}
+
 template <class K>
 Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const Time& t) const {
   if constexpr (std::is_same_v<K, Exact_kernel>) {

@@ -8,7 +8,8 @@
 // every certificate failing at the earliest failure time: exactly equal
 // times in the exact kernel (decided by the kernel's compare), the thesis's
 // epsilon-minimum in the floating-point ones. Each failure is classified as
-// the paper's vertex, edge, intersection or flip event (event_of).
+// the paper's vertex, edge, intersection or flip event (event_in_batch: the
+// x orders of a turning segment's points count with its flip).
 //
 // The subtree update replays, in the subtree of each topmost node u where a
 // failing certificate was decided, the insertion steps that reached it
@@ -79,7 +80,7 @@ public:
   struct Batch {
     Time time;
     std::vector<Segment_certificate_key> failing;  // in key order
-    std::array<std::size_t, 4> events{};           // failures by Segment_event
+    std::array<std::size_t, 4> events{};           // failures by Segment_event (event_in_batch)
     bool changed = false;                          // the tree just after differs from the one before
     std::size_t certificates = 0;                  // in force after the batch
     double update_seconds = 0;                     // the tree and its certificates made again

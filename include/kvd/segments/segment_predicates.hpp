@@ -118,6 +118,17 @@ inline constexpr const char* segment_event_names[] = {"vertex", "edge", "interse
 // (s_j passes over a corner of a cell of s_i's) otherwise; anything about a
 // crossing or the order of two lines at a point, an edge event.
 Segment_event event_of(const Segment_certificate_key& k, const std::vector<std::size_t>& rank);
+// The segments that turn through vertical in a batch: those whose endpoints'
+// x order is among its failing keys, sorted.
+std::vector<std::size_t> turning_segments(const std::vector<Segment_certificate_key>& failing);
+// Whether a failure is part of a flip of the batch (`turning`): the x order
+// of two points of a turning segment, which all reach one abscissa together.
+bool part_of_flip(const Segment_certificate_key& k, const std::vector<std::size_t>& turning);
+// The event a failure of a batch is: a flip when part_of_flip (so the x order
+// of an endpoint and a crossing of the turning segment is not a vertex
+// event, nor that of two of its crossings an edge event), else event_of.
+Segment_event event_in_batch(const Segment_certificate_key& k, const std::vector<std::size_t>& rank,
+                             const std::vector<std::size_t>& turning);
 
 struct Segment_sign {
   int sign;           // -1, 0, +1
