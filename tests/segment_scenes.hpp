@@ -1,10 +1,14 @@
 // Small segment scenes built in code, shared by the segment tests.
 #pragma once
 
+#include <cstdint>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "kvd/segments/segment_generators.hpp"
+#include "kvd/segments/segment_io.hpp"
 #include "kvd/segments/segment_scene.hpp"
 
 namespace kvd::test {
@@ -51,6 +55,24 @@ inline segments::Segment_scene generated(segments::Segment_family family, std::s
   o.end = end;
   o.crossings = crossings;
   return segments::generate_segments(o);
+}
+
+// The scenes on which the paper's certificates are checked against the
+// tree's changes (test_aeg_certificates, test_aeg_kinetic), named: five
+// bundled ones, and generated ones of the three families (the degenerate
+// one: shared x-coordinates, concurrent crossings, collinear overlaps,
+// resolved by the perturbation), seeds 1 to 4.
+inline std::vector<std::pair<std::string, segments::Segment_scene>> certificate_scenes() {
+  std::vector<std::pair<std::string, segments::Segment_scene>> scenes;
+  for (const char* name : {"two-crossing", "over-endpoint", "turning-vertical", "concurrent-three", "rotating-10"})
+    scenes.emplace_back(name, segments::load_segments(std::string(KVD_SOURCE_DIR) + "/data/segments/" + name + ".json"));
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    scenes.emplace_back("random " + std::to_string(seed), generated(segments::Segment_family::random, 12, seed, 10));
+    scenes.emplace_back("rotating " + std::to_string(seed), generated(segments::Segment_family::rotating, 6, seed, 10));
+    scenes.emplace_back("degenerate " + std::to_string(seed),
+                        generated(segments::Segment_family::degenerate, 10, seed, 10));
+  }
+  return scenes;
 }
 
 }  // namespace kvd::test

@@ -102,16 +102,7 @@ TEST_CASE("a segment over an endpoint: the paper's certificates that fail, deriv
 // of proofs/segment-certificates.md a transient node fails; the endpoint and
 // flip certificates fail at some changes too.
 TEST_CASE("one of the paper's certificates fails at every change of the tree", "[segments][aeg]") {
-  std::vector<std::pair<std::string, Segment_scene>> scenes;
-  for (const char* name : {"two-crossing", "over-endpoint", "turning-vertical", "concurrent-three", "rotating-10"})
-    scenes.emplace_back(name, load_segments(std::string(KVD_SOURCE_DIR) + "/data/segments/" + name + ".json"));
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    scenes.emplace_back("random " + std::to_string(seed), kvd::test::generated(Segment_family::random, 12, seed, 10));
-    scenes.emplace_back("rotating " + std::to_string(seed),
-                        kvd::test::generated(Segment_family::rotating, 6, seed, 10));
-    scenes.emplace_back("degenerate " + std::to_string(seed),
-                        kvd::test::generated(Segment_family::degenerate, 10, seed, 10));
-  }
+  const auto scenes = kvd::test::certificate_scenes();
   std::size_t changes = 0, intervals = 0;
   std::array<std::size_t, 3> caught{};  // by flips, endpoints, transient nodes
   for (const auto& [name, s] : scenes) {

@@ -12,6 +12,10 @@
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/float_kernel.hpp"
 
+namespace kvd::segments {
+class Cylindrical_bsp;
+}
+
 namespace kvd::python {
 
 namespace py = pybind11;
@@ -58,7 +62,12 @@ auto with_kernel(const std::string& kernel, F f) {
   throw py::value_error("kernel is 'exact', 'double' or 'mpfr:BITS', not '" + kernel + "'");
 }
 
-// The module's part for segment scenes (segment_bindings.cpp).
+// The module's part for segment scenes (segment_bindings.cpp), and the run
+// on the paper's certificates (paper_segment_bindings.cpp).
 void bind_segments(py::module_& m);
+void bind_paper_segments(py::module_& m);
+// A segment tree as build_segments returns it: cuts by kind, nodes, leaves,
+// height, its text and SHA-256 (segment_bindings.cpp).
+py::dict segment_tree_dict(const segments::Cylindrical_bsp& b);
 
 }  // namespace kvd::python

@@ -271,4 +271,5 @@ PYBIND11_MODULE(kvd, m) {
       .def_property_readonly("summary", &Any_kinetic::summary);
 
   kvd::python::bind_segments(m);
+  kvd::python::bind_paper_segments(m);
 }

@@ -19,11 +19,7 @@
 
 namespace kvd::python {
 
-namespace {
-
-using segments::Segment_scene;
-
-py::dict counts(const segments::Cylindrical_bsp& b) {
+py::dict segment_tree_dict(const segments::Cylindrical_bsp& b) {
   const segments::Bsp_counts c = b.counts();
   py::dict d;
   d["vertex_cuts"] = c.vertex_cuts;
@@ -38,11 +34,15 @@ py::dict counts(const segments::Cylindrical_bsp& b) {
   return d;
 }
 
+namespace {
+
+using segments::Segment_scene;
+
 py::dict build(const Segment_scene& s, const py::handle& t) {
   const mpq_class at = t.is_none() ? s.start : to_mpq(t);
   const Exact_kernel k;
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
-  py::dict d = counts(segments::build_cylindrical_bsp(pred, Exact_time(at)));
+  py::dict d = segment_tree_dict(segments::build_cylindrical_bsp(pred, Exact_time(at)));
   d["segments"] = s.segments.size();
   d["crossings"] = segments::count_crossings(s, at);
   return d;
@@ -120,7 +120,7 @@ public:
     put_time(d, k_, *t, "time");
     return d;
   }
-  py::dict tree() const override { return counts(kin_.tree()); }
+  py::dict tree() const override { return segment_tree_dict(kin_.tree()); }
   py::dict summary() const override {
     py::dict d;
     d["batches"] = batches_.size();
@@ -142,10 +142,11 @@ private:
     py::dict d;
     put_time(d, k_, b.time, "time");
     py::list failing;
+    const std::vector<std::size_t> turning = segments::turning_segments(b.failing);
     for (const auto& key : b.failing)
       failing.append(py::make_tuple(segments::kind_name(key.kind), segments::features(key),
                                     segments::segment_event_names[static_cast<int>(
-                                        segments::event_of(key, kin_.scene().rank))]));
+                                        segments::event_in_batch(key, kin_.scene().rank, turning))]));
     d["failing"] = failing;
     d["changed"] = b.changed;
     d["certificates"] = b.certificates;

@@ -9,6 +9,23 @@
 
 namespace kvd::segments {
 
+std::string aeg_certificate_subject(const Aeg_certificate_id& id) {
+  switch (id.kind) {
+    case Aeg_certificate_kind::endpoint: return point_name(Site_point::endpoint(id.index));
+    case Aeg_certificate_kind::flip: return "s" + std::to_string(id.index);
+    case Aeg_certificate_kind::transient: break;
+  }
+  const Cell& c = id.cell;
+  std::string t;
+  const auto part = [&](const std::string& p) { t += (t.empty() ? "" : ", ") + p; };
+  if (c.left && c.right) part("between " + point_name(*c.left) + " and " + point_name(*c.right));
+  else if (c.left) part("right of " + point_name(*c.left));
+  else if (c.right) part("left of " + point_name(*c.right));
+  if (c.floor) part("above s" + std::to_string(*c.floor));
+  if (c.roof) part("below s" + std::to_string(*c.roof));
+  return t;
+}
+
 template <class K>
 Aeg_kinetic_bsp<K>::Aeg_kinetic_bsp(const K& k, Segment_scene scene, bool validate)
     : k_(k),

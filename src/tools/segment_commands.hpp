@@ -7,8 +7,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli.hpp"
+#include "kvd/kernel/convert.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 
 namespace kvd::cli {
@@ -30,6 +32,27 @@ struct Segment_run_options {
 };
 
 int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o);
+
+// Advances `run` (a kinetic segment BSP of kernel k) batch by batch up to
+// o.until or the batch holding the o.max_events-th failure, appending each
+// batch to `batches`, with progress on stderr; why it stopped: "limit",
+// "events" or "exhausted".
+template <class Run, class K>
+std::string run_batches(Run& run, const K& k, const Segment_run_options& o,
+                        std::vector<typename Run::Batch>& batches) {
+  const auto progress = progress_every_few_seconds("kvd simulate");
+  std::optional<typename K::Time> until;
+  if (o.until) until = k.time(from_rational<typename K::FT>(*o.until));
+  std::size_t failures = 0;
+  while (const auto next = run.next_event_time()) {
+    if (until && k.compare(*next, *until) > 0) return "limit";
+    if (failures >= o.max_events) return "events";
+    batches.push_back(run.advance());
+    failures += batches.back().failing.size();
+    progress(batches.size(), failures);
+  }
+  return "exhausted";
+}
 // The same with o.paper (src/tools/segment_simulate_paper.cpp).
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 

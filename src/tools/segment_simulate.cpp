@@ -32,25 +32,10 @@ template <class K>
 int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
   using Kinetic = segments::Kinetic_segment_bsp<K>;
   Kinetic kin(k, s, o.validate, o.update);
-  const bool bounded = o.until.has_value();
-  const typename K::Time until = bounded ? k.time(from_rational<typename K::FT>(*o.until)) : kin.now();
-  const auto progress = progress_every_few_seconds("kvd simulate");
   std::vector<typename Kinetic::Batch> batches;
+  std::string stopped = run_batches(kin, k, o, batches);
   std::size_t failures = 0;
-  std::string stopped = "exhausted";
-  while (const auto next = kin.next_event_time()) {
-    if (bounded && k.compare(*next, until) > 0) {
-      stopped = "limit";
-      break;
-    }
-    if (failures >= o.max_events) {
-      stopped = "events";
-      break;
-    }
-    batches.push_back(kin.advance());
-    failures += batches.back().failing.size();
-    progress(batches.size(), failures);
-  }
+  for (const auto& b : batches) failures += b.failing.size();
   if (kin.stuck()) stopped = "stuck";
   std::array<std::size_t, 4> events{}, changed_by{};
   std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;

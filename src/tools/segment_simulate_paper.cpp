@@ -1,6 +1,7 @@
 // kvd simulate --certificates paper on a segment scene: the run on seed
 // 003's own certificate set (kvd/segments/aeg_kinetic_bsp.hpp), its batches
 // and the certificates that fail in them.
+#include <array>
 #include <iostream>
 
 #include "json_out.hpp"
@@ -13,31 +14,7 @@ namespace kvd::cli {
 
 namespace {
 
-using segments::Aeg_certificate_id;
 using segments::Aeg_certificate_kind;
-
-// "between s1.0 and s0xs1, above s0": a transient node's cell by its walls,
-// floor and roof (those it has).
-std::string cell_text(const segments::Cell& c) {
-  std::string t;
-  const auto part = [&](const std::string& p) { t += (t.empty() ? "" : ", ") + p; };
-  if (c.left && c.right) part("between " + segments::point_name(*c.left) + " and " + segments::point_name(*c.right));
-  else if (c.left) part("right of " + segments::point_name(*c.left));
-  else if (c.right) part("left of " + segments::point_name(*c.right));
-  if (c.floor) part("above s" + std::to_string(*c.floor));
-  if (c.roof) part("below s" + std::to_string(*c.roof));
-  return t;
-}
-
-// What the certificate is about: a cell, an endpoint ("s0.1") or a segment.
-std::string subject(const Aeg_certificate_id& id) {
-  switch (id.kind) {
-    case Aeg_certificate_kind::transient: return cell_text(id.cell);
-    case Aeg_certificate_kind::endpoint: return segments::point_name(segments::Site_point::endpoint(id.index));
-    case Aeg_certificate_kind::flip: return "s" + std::to_string(id.index);
-  }
-  return {};
-}
 
 const char* kind_text(Aeg_certificate_kind k) { return segments::aeg_certificate_kind_names[static_cast<int>(k)]; }
 
@@ -47,28 +24,15 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   const Exact_kernel k;
   using Run = segments::Aeg_kinetic_bsp<Exact_kernel>;
   Run run(k, s, o.validate);
-  const bool bounded = o.until.has_value();
-  const Exact_time until = bounded ? k.time(*o.until) : run.now();
-  const auto progress = progress_every_few_seconds("kvd simulate");
   std::vector<Run::Batch> batches;
+  const std::string stopped = run_batches(run, k, o, batches);
   std::size_t failures = 0, changed = 0, simultaneous = 0;
   std::array<std::size_t, 3> by_kind{};
-  std::string stopped = "exhausted";
-  while (const auto next = run.next_event_time()) {
-    if (bounded && k.compare(*next, until) > 0) {
-      stopped = "limit";
-      break;
-    }
-    if (failures >= o.max_events) {
-      stopped = "events";
-      break;
-    }
-    const Run::Batch& b = batches.emplace_back(run.advance());
+  for (const Run::Batch& b : batches) {
     failures += b.failing.size();
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
     for (const auto& id : b.failing) ++by_kind[static_cast<std::size_t>(id.kind)];
-    progress(batches.size(), failures);
   }
   const segments::Bsp_counts c = run.tree().counts();
   if (sa.json) {
@@ -85,7 +49,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
       Json list = Json::array();
       for (const auto& b : batches) {
         Json failing = Json::array();
-        for (const auto& id : b.failing) failing.push_back({{"kind", kind_text(id.kind)}, {"of", subject(id)}});
+        for (const auto& id : b.failing) failing.push_back({{"kind", kind_text(id.kind)}, {"of", segments::aeg_certificate_subject(id)}});
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
                         {"failing", failing}, {"changed", b.changed}, {"certificates", b.certificates}});
       }
@@ -97,7 +61,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
       for (const auto& b : batches) {
         std::cout << "t = " << k.to_string(b.time) << " (" << approx(k.to_double(b.time)) << "):";
         for (std::size_t i = 0; i < b.failing.size(); ++i)
-          std::cout << (i ? ";" : "") << " " << kind_text(b.failing[i].kind) << " " << subject(b.failing[i]);
+          std::cout << (i ? ";" : "") << " " << kind_text(b.failing[i].kind) << " " << segments::aeg_certificate_subject(b.failing[i]);
         std::cout << (b.changed ? "; tree changed" : "; tree unchanged") << "\n";
       }
     std::cout << "kernel:        " << kernel_label(k) << "\ncertificates:  paper (seed 003: transient nodes, "

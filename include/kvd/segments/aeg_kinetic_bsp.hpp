@@ -47,6 +47,11 @@ struct Aeg_certificate_id {
   friend bool operator==(const Aeg_certificate_id&, const Aeg_certificate_id&) = default;
 };
 
+// What a certificate is about, for printing: a transient node's cell by its
+// walls, floor and roof ("between s1.0 and s0xs1, above s0"), an endpoint
+// ("s0.1") or a segment ("s3").
+std::string aeg_certificate_subject(const Aeg_certificate_id& id);
+
 template <class K>
 class Aeg_kinetic_bsp {
 public:
@@ -64,6 +69,9 @@ public:
   // rational instant strictly between the last batch and this one: a
   // difference is a change of the tree that no certificate of the set saw.
   Aeg_kinetic_bsp(const K& k, Segment_scene scene, bool validate = false);
+  // Its predicates keep the addresses of its kernel and scene.
+  Aeg_kinetic_bsp(const Aeg_kinetic_bsp&) = delete;
+  Aeg_kinetic_bsp& operator=(const Aeg_kinetic_bsp&) = delete;
 
   const Time& now() const { return now_; }
   const Cylindrical_bsp& tree() const { return tree_; }
