@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "kvd/detail/scene/priority.hpp"
 #include "kvd/segments/segment_generators.hpp"
 #include "kvd/segments/segment_io.hpp"
 #include "kvd/segments/segment_scene.hpp"
@@ -55,6 +56,40 @@ inline segments::Segment_scene generated(segments::Segment_family family, std::s
   o.end = end;
   o.crossings = crossings;
   return segments::generate_segments(o);
+}
+
+// Seven segments with endpoints on small integers, over [0, 2], moving
+// linearly (all of them for an even seed, every other one for an odd seed):
+// shared coordinates and simultaneous events are common. None when the
+// endpoints of a segment meet in the span (sampled), which is not valid input.
+inline std::optional<segments::Segment_scene> small_integer_scene(std::uint64_t seed) {
+  scene::Split_mix64 g(seed);
+  std::vector<segments::Segment> segs;
+  const bool all_moving = seed % 2 == 0;
+  while (segs.size() < 7) {
+    const long x0 = g.between(-6, 6), y0 = g.between(-6, 6), x1 = g.between(-6, 6), y1 = g.between(-6, 6);
+    if (x0 == x1 && y0 == y1) continue;
+    if (!all_moving && segs.size() % 2 == 0) {
+      segs.push_back(fixed(x0, y0, x1, y1));
+      continue;
+    }
+    const long vx = g.between(-2, 2), vy = g.between(-2, 2), wx = g.between(-2, 2), wy = g.between(-2, 2);
+    segs.push_back(moving(linear(x0, vx), linear(y0, vy), linear(x1, wx), linear(y1, wy)));
+  }
+  segments::Segment_scene s;
+  s.segments = std::move(segs);
+  s.seed = seed;
+  s.end = 2;
+  s.derive();
+  for (std::size_t i = 0; i < s.segments.size(); ++i) {
+    const auto p = s.endpoint(2 * i), q = s.endpoint(2 * i + 1);
+    const segments::QPoly dx = p[0] - q[0], dy = p[1] - q[1];
+    for (int n = 0; n <= 200; ++n) {
+      const mpq_class t(n, 100);
+      if (dx(t) == 0 && dy(t) == 0) return std::nullopt;
+    }
+  }
+  return s;
 }
 
 // The scenes on which the paper's certificates are checked against the

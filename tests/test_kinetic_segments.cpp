@@ -5,7 +5,6 @@
 
 #include "kernels.hpp"
 #include "segment_scenes.hpp"
-#include "kvd/detail/scene/priority.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 #include "kvd/segments/segment_generators.hpp"
 
@@ -279,35 +278,9 @@ TEST_CASE("long rotating segments: every flip is remade at the frontier, every b
 TEST_CASE("random moving segment scenes: every batch equals a fresh build", "[segments][kinetic]") {
   std::size_t batches = 0, simultaneous = 0;
   for (std::uint64_t seed = 1; seed <= 50; ++seed) {
-    scene::Split_mix64 g(seed);
-    std::vector<Segment> segs;
-    const bool all_moving = seed % 2 == 0;
-    while (segs.size() < 7) {
-      const long x0 = g.between(-6, 6), y0 = g.between(-6, 6), x1 = g.between(-6, 6), y1 = g.between(-6, 6);
-      if (x0 == x1 && y0 == y1) continue;
-      if (!all_moving && segs.size() % 2 == 0) {
-        segs.push_back(fixed(x0, y0, x1, y1));
-        continue;
-      }
-      const long vx = g.between(-2, 2), vy = g.between(-2, 2), wx = g.between(-2, 2), wy = g.between(-2, 2);
-      segs.push_back(moving(linear(x0, vx), linear(y0, vy), linear(x1, wx), linear(y1, wy)));
-    }
-    Segment_scene s;
-    s.segments = std::move(segs);
-    s.seed = seed;
-    s.end = 2;
-    s.derive();
-    // Endpoints of a segment may meet in time: such a scene is not valid input.
-    bool collapses = false;
-    for (std::size_t i = 0; i < s.segments.size(); ++i) {
-      const auto p = s.endpoint(2 * i), q = s.endpoint(2 * i + 1);
-      const QPoly dx = p[0] - q[0], dy = p[1] - q[1];
-      for (int n = 0; n <= 200; ++n) {
-        const mpq_class t(n, 100);
-        collapses = collapses || (dx(t) == 0 && dy(t) == 0);
-      }
-    }
-    if (collapses) continue;
+    const auto small = kvd::test::small_integer_scene(seed);
+    if (!small) continue;
+    Segment_scene s = *small;
     Kinetic_segment_bsp<Exact_kernel> kin(Exact_kernel(), s, true);
     INFO("seed " << seed);
     // Half way, a flight-plan change: one segment takes a new velocity.

@@ -37,6 +37,9 @@ public:
     d["failing"] = failing;
     d["changed"] = b.changed;
     d["certificates"] = b.certificates;
+    d["replays"] = b.replays;
+    d["nodes_rebuilt"] = b.nodes_rebuilt;
+    d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(run_.tree().text());
     batches_.push_back(d);
     return d;
@@ -51,7 +54,7 @@ public:
     put_time(d, k_, run_.now(), "time");
     return d;
   }
-  py::object next_event_time() const {
+  py::object next_event_time() {
     const auto t = run_.next_event_time();
     if (!t) return py::none();
     py::dict d;
@@ -82,14 +85,14 @@ private:
 void bind_paper_segments(py::module_& m) {
   py::class_<Paper_segments>(m, "PaperSegments",
                              "The segment BSP run on seed 003's own certificates (transient nodes, endpoints'\n"
-                             "neighbours, flips) with exact failure times, in the exact kernel; the tree is built\n"
-                             "again after each batch (kvd simulate --certificates paper)")
+                             "neighbours, flips) with exact failure times, in the exact kernel; each batch replays the\n"
+                             "subtrees its certificates name (kvd simulate --certificates paper)")
       .def(py::init<const segments::Segment_scene&, std::size_t, bool, const py::handle&>(), py::arg("scene"),
            py::arg("events") = 100, py::arg("validate") = true, py::arg("until") = py::none())
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
-           "structure_hash), or None when nothing fails any more, `events` failures were processed, or the next\n"
-           "batch is after `until`.")
+           "replays, nodes_rebuilt, update_seconds, structure_hash), or None when nothing fails any more,\n"
+           "`events` failures were processed, or the next batch is after `until`.")
       .def_property_readonly("events", &Paper_segments::events, "The batches processed so far.")
       .def_property_readonly("now", &Paper_segments::now)
       .def_property_readonly("next_event_time", &Paper_segments::next_event_time)

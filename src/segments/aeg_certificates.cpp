@@ -64,12 +64,12 @@ Aeg_state aeg_state(const Segment_predicates<K>& pred, const typename K::Time& t
 }
 
 template <class K>
-std::array<std::int64_t, 2> aeg_neighbours(const Cylindrical_bsp& b, const Segment_predicates<K>& pred,
-                                           const typename K::Time& t, std::size_t e) {
+std::size_t aeg_leaf(const Cylindrical_bsp& b, const Segment_predicates<K>& pred, const typename K::Time& t,
+                     std::size_t e, std::size_t from) {
   const Site_point p = Site_point::endpoint(e);
   // -1 when e is its segment's left endpoint: the side away from the segment.
   const int away = pred.compare_x(p, Site_point::endpoint(e ^ 1U), t).sign;
-  std::size_t v = 0;
+  std::size_t v = from;
   while (b.nodes[v].kind != Cut_kind::leaf) {
     const Bsp_node& n = b.nodes[v];
     const int side = n.kind == Cut_kind::edge ? pred.side(p, n.segment, t).sign
@@ -77,10 +77,16 @@ std::array<std::int64_t, 2> aeg_neighbours(const Cylindrical_bsp& b, const Segme
                                               : pred.compare_x(p, n.point, t).sign;
     // 0 only by identity: p on an edge cut, which its own segment's never
     // are on the way to the far side.
-    if (side == 0) throw std::logic_error("aeg_neighbours: " + point_name(p) + " lies on a cut of its path");
+    if (side == 0) throw std::logic_error("aeg_leaf: " + point_name(p) + " lies on a cut of its path");
     v = static_cast<std::size_t>(n.child[side > 0]);
   }
-  const Cell& c = b.nodes[v].cell;
+  return v;
+}
+
+template <class K>
+std::array<std::int64_t, 2> aeg_neighbours(const Cylindrical_bsp& b, const Segment_predicates<K>& pred,
+                                           const typename K::Time& t, std::size_t e) {
+  const Cell& c = b.nodes[aeg_leaf(b, pred, t, e)].cell;
   return {c.floor ? std::int64_t(*c.floor) : -1, c.roof ? std::int64_t(*c.roof) : -1};
 }
 
@@ -103,6 +109,8 @@ Aeg_failures aeg_failures(const Cylindrical_bsp& before, const Cylindrical_bsp& 
 
 #define KVD_INSTANTIATE_AEG_CERTIFICATES(K)                                                                       \
   template Aeg_state aeg_state<K>(const Segment_predicates<K>&, const typename K::Time&);                         \
+  template std::size_t aeg_leaf<K>(const Cylindrical_bsp&, const Segment_predicates<K>&, const typename K::Time&, \
+                                   std::size_t, std::size_t);                                                     \
   template std::array<std::int64_t, 2> aeg_neighbours<K>(const Cylindrical_bsp&, const Segment_predicates<K>&,     \
                                                          const typename K::Time&, std::size_t);                   \
   template Aeg_failures aeg_failures<K>(const Cylindrical_bsp&, const Cylindrical_bsp&, const Segment_predicates<K>&, \

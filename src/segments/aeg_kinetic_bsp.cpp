@@ -2,12 +2,29 @@
 // (kvd/segments/aeg_kinetic_bsp.hpp).
 #include "kvd/segments/aeg_kinetic_bsp.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <set>
+#include <tuple>
+
 #include "kvd/detail/kinetic/validator.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/segments/aeg_certificates.hpp"
 
 namespace kvd::segments {
+
+namespace {
+
+bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
+
+// Failures in the order Batch::failing keeps.
+bool before(const Aeg_certificate_id& a, const Aeg_certificate_id& b) {
+  return std::tie(a.kind, a.index, a.cell.left, a.cell.right, a.cell.floor, a.cell.roof) <
+         std::tie(b.kind, b.index, b.cell.left, b.cell.right, b.cell.floor, b.cell.roof);
+}
+
+}  // namespace
 
 std::string aeg_certificate_subject(const Aeg_certificate_id& id) {
   switch (id.kind) {
@@ -35,73 +52,282 @@ Aeg_kinetic_bsp<K>::Aeg_kinetic_bsp(const K& k, Segment_scene scene, bool valida
       bounded_(scene_.end.has_value()),
       end_(bounded_ ? k_.time(from_rational<typename K::FT>(*scene_.end)) : now_),
       pred_(k_, scene_) {
-  make();
+  rebuild();
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::rebuild() {
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  builder.start();
+  for (const std::size_t s : scene_.priority_order) builder.insert(static_cast<std::uint32_t>(s));
+  transient_.clear();
+  queue_.clear();
+  const std::size_t n = pred_.size();
+  endpoint_.assign(2 * n, {});
+  flip_.assign(n, {});
+  leaf_.assign(2 * n, 0);
+  beside_.clear();
+  certify_below(0);
+  for (std::size_t e = 0; e < 2 * n; ++e) make_endpoint(e);
+  for (std::size_t s = 0; s < n; ++s) make_flip(s);
 }
 
 template <class K>
 template <class F>
-void Aeg_kinetic_bsp<K>::add(const Aeg_certificate_id& id, F decide) {
+void Aeg_kinetic_bsp<K>::make(Certificate& c, F decide, std::size_t index) {
+  // Every sign decided by arithmetic hands over its polynomials (identities
+  // have none: they never change).
   polys_.clear();
-  decide();
-  std::optional<Time> first;
-  for (const P& q : polys_) {
-    const auto& r = roots_.next_root(k_, q, now_);
-    if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
-  }
-  if (first && bounded_ && k_.compare(*first, end_) > 0) first.reset();  // after the span: no event
-  certs_.push_back({id, first});
-}
-
-template <class K>
-void Aeg_kinetic_bsp<K>::make() {
-  pred_.record({});
-  tree_ = build_cylindrical_bsp(pred_, now_);
-  certs_.clear();
-  const std::size_t n = pred_.size();
-  std::vector<std::array<std::int64_t, 2>> near;
-  for (std::size_t e = 0; e < 2 * n; ++e) near.push_back(aeg_neighbours(tree_, pred_, now_, e));
-  // From here on every sign decided by arithmetic hands over its polynomials
-  // (identities have none: they never change).
   pred_.record([this](const Segment_certificate_key&, std::vector<P>&& polys, std::int32_t, int) {
     for (P& q : polys) polys_.push_back(std::move(q));
   });
-  for (const std::size_t v : transient_nodes(tree_)) {
-    const Cell& c = tree_.nodes[v].cell;
-    add({Aeg_certificate_kind::transient, 0, c}, [&] {
-      if (c.left && c.right) pred_.compare_x(*c.left, *c.right, now_);
-      if (c.floor && c.roof)
-        for (const auto& wall : {c.left, c.right})
-          if (wall) pred_.order_at(*wall, *c.roof, *c.floor, now_);
-    });
-  }
-  for (std::size_t e = 0; e < 2 * n; ++e)
-    add({Aeg_certificate_kind::endpoint, e, {}}, [&] {
-      const Site_point p = Site_point::endpoint(e);
-      for (const std::int64_t s : near[e]) {
-        if (s < 0) continue;
-        const auto j = static_cast<std::size_t>(s);
-        pred_.side(p, j, now_);
-        pred_.compare_x(p, Site_point::endpoint(2 * j), now_);
-        pred_.compare_x(p, Site_point::endpoint(2 * j + 1), now_);
-      }
-    });
-  for (std::size_t s = 0; s < n; ++s)
-    add({Aeg_certificate_kind::flip, s, {}},
-        [&] { pred_.compare_x(Site_point::endpoint(2 * s + 1), Site_point::endpoint(2 * s), now_); });
+  decide();
   pred_.record({});
+  c.version = ++versions_;
+  c.fails.reset();
+  for (const P& q : polys_) {
+    const auto& r = roots_.next_root(k_, q, now_);
+    if (r && (!c.fails || k_.compare(*r, *c.fails) < 0)) c.fails = r;
+  }
+  // A failure after the span's end is no event.
+  if (c.fails && bounded_ && k_.compare(*c.fails, end_) > 0) c.fails.reset();
+  if (c.fails) push({*c.fails, c.id.kind, index, c.version});
 }
 
 template <class K>
-std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() const {
-  std::optional<Time> first;
-  for (const Certificate& c : certs_)
-    if (c.fails && (!first || k_.compare(*c.fails, *first) < 0)) first = c.fails;
-  return first;
+void Aeg_kinetic_bsp<K>::make_transient(std::size_t v) {
+  const Cell c = tree_.nodes[v].cell;
+  Certificate& cert = transient_[v];
+  if (const auto it = spare_.find(c); it != spare_.end()) {
+    cert = it->second;
+    spare_.erase(it);
+    cert.version = ++versions_;
+    if (cert.fails) push({*cert.fails, Aeg_certificate_kind::transient, v, cert.version});
+    return;
+  }
+  cert.id = {Aeg_certificate_kind::transient, 0, c};
+  make(cert, [&] {
+    if (c.left && c.right) pred_.compare_x(*c.left, *c.right, now_);
+    if (c.floor && c.roof)
+      for (const auto& wall : {c.left, c.right})
+        if (wall) pred_.order_at(*wall, *c.roof, *c.floor, now_);
+  }, v);
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from) {
+  const Site_point p = Site_point::endpoint(e);
+  // The leaf beside p: its floor and roof are p's neighbours.
+  const std::size_t v = aeg_leaf(tree_, pred_, now_, e, from);
+  leaf_[e] = v;
+  beside_[v].push_back(e);
+  const Cell& c = tree_.nodes[v].cell;
+  Certificate& cert = endpoint_[e];
+  if (cert.version > 0 && !failing_endpoints_.count(e) && cert.near.floor == c.floor && cert.near.roof == c.roof)
+    return;
+  cert.id = {Aeg_certificate_kind::endpoint, e, {}};
+  cert.near = c;
+  make(cert, [&] {
+    for (const auto& s : {c.floor, c.roof}) {
+      if (!s) continue;
+      pred_.side(p, *s, now_);
+      pred_.compare_x(p, Site_point::endpoint(2 * *s), now_);
+      pred_.compare_x(p, Site_point::endpoint(2 * *s + 1), now_);
+    }
+  }, e);
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::make_flip(std::size_t s) {
+  Certificate& cert = flip_[s];
+  cert.id = {Aeg_certificate_kind::flip, s, {}};
+  make(cert, [&] { pred_.compare_x(Site_point::endpoint(2 * s + 1), Site_point::endpoint(2 * s), now_); }, s);
+}
+
+template <class K>
+bool Aeg_kinetic_bsp<K>::certify_below(std::size_t v) {
+  const Bsp_node& n = tree_.nodes[v];
+  bool points = point_cut(n);
+  if (n.kind != Cut_kind::leaf)
+    for (const std::int32_t c : n.child) points = certify_below(static_cast<std::size_t>(c)) || points;
+  if (!points && n.parent >= 0 && point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)])) make_transient(v);
+  return points;
+}
+
+template <class K>
+bool Aeg_kinetic_bsp<K>::points_below(std::size_t v) const {
+  const Bsp_node& n = tree_.nodes[v];
+  if (point_cut(n)) return true;
+  return n.kind != Cut_kind::leaf && (points_below(static_cast<std::size_t>(n.child[0])) ||
+                                      points_below(static_cast<std::size_t>(n.child[1])));
+}
+
+template <class K>
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
+  // The cuts the certificate is about, and the node its path starts from.
+  std::vector<Site_point> points;
+  std::vector<std::size_t> segments;
+  std::size_t from = e.index;
+  switch (e.kind) {
+    case Aeg_certificate_kind::transient: {
+      const Cell& c = transient_.at(e.index).id.cell;
+      for (const auto& w : {c.left, c.right})
+        if (w) points.push_back(*w);
+      for (const auto& s : {c.floor, c.roof})
+        if (s) segments.push_back(*s);
+      break;
+    }
+    case Aeg_certificate_kind::endpoint: {
+      from = leaf_[e.index];
+      points.push_back(Site_point::endpoint(e.index));
+      const Cell& c = tree_.nodes[from].cell;
+      for (const auto& s : {c.floor, c.roof})
+        if (s) {
+          segments.push_back(*s);
+          points.push_back(Site_point::endpoint(2 * *s));
+          points.push_back(Site_point::endpoint(2 * *s + 1));
+        }
+      break;
+    }
+    case Aeg_certificate_kind::flip: {
+      // Every cut of the segment with none of its cuts above it.
+      std::vector<std::size_t> out;
+      std::vector<std::pair<std::size_t, bool>> stack{{0, false}};
+      while (!stack.empty()) {
+        const auto [v, below] = stack.back();
+        stack.pop_back();
+        const Bsp_node& n = tree_.nodes[v];
+        const bool own = n.kind == Cut_kind::edge ? n.segment == e.index : point_cut(n) && n.point.on(e.index);
+        if (own && !below) out.push_back(v);
+        if (own || n.kind == Cut_kind::leaf) continue;  // a replay of v remakes what lies below
+        for (const std::int32_t c : n.child) stack.emplace_back(static_cast<std::size_t>(c), below);
+      }
+      for (std::size_t& r : out) r = above_ties(r, Site_point::endpoint(2 * e.index));
+      return out;
+    }
+  }
+  std::size_t top = from;
+  for (std::int32_t a = tree_.nodes[from].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent) {
+    const Bsp_node& n = tree_.nodes[static_cast<std::size_t>(a)];
+    if (n.kind == Cut_kind::edge ? std::count(segments.begin(), segments.end(), n.segment) > 0
+                                 : std::count(points.begin(), points.end(), n.point) > 0)
+      top = static_cast<std::size_t>(a);
+  }
+  // The event happens where the certificate's first point is (an endpoint;
+  // a transient cell's walls, which meet there or at which floor and roof
+  // meet).
+  return {above_ties(top, points.front())};
+}
+
+template <class K>
+std::size_t Aeg_kinetic_bsp<K>::above_ties(std::size_t top, const Site_point& at) const {
+  for (std::int32_t a = tree_.nodes[top].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent) {
+    const Bsp_node& n = tree_.nodes[static_cast<std::size_t>(a)];
+    const Segment_sign s = n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_);
+    if (s.rule != Segment_rule::value) top = static_cast<std::size_t>(a);
+  }
+  return top;
+}
+
+template <class K>
+bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, Batch& b) {
+  bool changed = false;
+  std::vector<Site_point> was, is;
+  std::set<std::size_t> above;  // the roots' ancestors, whose logs hold the locations of crossings found below
+  for (const std::size_t v : roots)
+    for (std::int32_t a = tree_.nodes[v].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
+      a = tree_.nodes[static_cast<std::size_t>(a)].parent;
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  for (const std::size_t v : roots) {
+    const std::string text = tree_.text(v);
+    const std::vector<Site_point> x = crossings_below(tree_, v);
+    was.insert(was.end(), x.begin(), x.end());
+    // The nodes below v go, with their certificates; v is made again.
+    std::set<std::size_t> old;
+    for (const std::size_t n : tree_.preorder(v)) {
+      old.insert(n);
+      if (const auto it = transient_.find(n); it != transient_.end()) {
+        spare_.emplace(it->second.id.cell, it->second);
+        transient_.erase(it);
+      }
+      if (n != v) log_.free.push_back(n);
+    }
+    const std::vector<Arrival> arrivals = log_.at[v];
+    builder.replay(v, arrivals);
+    const std::vector<Site_point> y = crossings_below(tree_, v);
+    is.insert(is.end(), y.begin(), y.end());
+    changed = changed || tree_.text(v) != text;
+    ++b.replays;
+    // The ancestors' transience may change with the point cuts below v:
+    // walking up, while none lies below, each node's other child is read.
+    bool points = certify_below(v);
+    for (std::size_t c = v; tree_.nodes[c].parent >= 0;) {
+      const auto u = static_cast<std::size_t>(tree_.nodes[c].parent);
+      const Bsp_node& n = tree_.nodes[u];
+      points = points || point_cut(n) || points_below(static_cast<std::size_t>(n.child[n.child[0] == std::int32_t(c)]));
+      const bool is = !points && n.parent >= 0 && point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)]);
+      if (!is) transient_.erase(u);
+      else if (!transient_.count(u)) make_transient(u);
+      c = u;
+    }
+    for (const std::size_t n : old) {
+      const auto it = beside_.find(n);
+      if (it == beside_.end()) continue;
+      const std::vector<std::size_t> endpoints = std::move(it->second);
+      beside_.erase(it);
+      for (const std::size_t e : endpoints) make_endpoint(e, v);
+    }
+  }
+  spare_.clear();  // cells gone with their nodes
+  b.nodes_rebuilt += builder.added();
+  // A crossing cut below a root before and nowhere now: its location, logged
+  // above the roots, goes.
+  std::sort(was.begin(), was.end());
+  std::sort(is.begin(), is.end());
+  std::vector<Site_point> gone;
+  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(gone));
+  gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
+  unlog_crossings(log_, above, gone);
+  return changed;
+}
+
+template <class K>
+bool Aeg_kinetic_bsp<K>::stale(const Entry& e) const {
+  switch (e.kind) {
+    case Aeg_certificate_kind::transient: {
+      const auto it = transient_.find(e.index);
+      return it == transient_.end() || it->second.version != e.version;
+    }
+    case Aeg_certificate_kind::endpoint: return endpoint_[e.index].version != e.version;
+    case Aeg_certificate_kind::flip: return flip_[e.index].version != e.version;
+  }
+  return true;
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::push(const Entry& e) {
+  queue_.push_back(e);
+  std::push_heap(queue_.begin(), queue_.end(),
+                 [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::pop() {
+  std::pop_heap(queue_.begin(), queue_.end(),
+                [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
+  queue_.pop_back();
+}
+
+template <class K>
+std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
+  while (!queue_.empty() && stale(queue_.front())) pop();
+  if (queue_.empty()) return std::nullopt;
+  return queue_.front().time;
 }
 
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
-  Batch b{*next_event_time(), {}, false, 0};
+  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0};
   if (validate_) {
     const Time mid = kinetic::between(k_, now_, b.time);
     ++validations_;
@@ -109,13 +335,42 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
       failures_.push_back("the tree in force before t = " + k_.to_string(b.time) + " differs from a fresh build at t = " +
                           k_.to_string(mid));
   }
-  for (const Certificate& c : certs_)
-    if (c.fails && k_.compare(*c.fails, b.time) == 0) b.failing.push_back(c.id);
-  const std::string before = tree_.text();
+  const auto start = std::chrono::steady_clock::now();
+  // The failing certificates, and the subtrees they name (none below
+  // another), whose ties are read at the batch's instant.
   now_ = b.time;
-  make();
-  b.changed = tree_.text() != before;
-  b.certificates = certs_.size();
+  std::set<std::size_t> named;
+  std::vector<std::size_t> turning;
+  while (!queue_.empty() && (stale(queue_.front()) || k_.compare(queue_.front().time, b.time) == 0)) {
+    const Entry e = queue_.front();
+    pop();
+    if (stale(e)) continue;
+    const Certificate& c = e.kind == Aeg_certificate_kind::transient ? transient_.at(e.index)
+                           : e.kind == Aeg_certificate_kind::endpoint ? endpoint_[e.index]
+                                                                      : flip_[e.index];
+    b.failing.push_back(c.id);
+    for (const std::size_t r : roots(e)) named.insert(r);
+    // A failing certificate is made again, not kept.
+    if (e.kind == Aeg_certificate_kind::flip) turning.push_back(e.index);
+    else if (e.kind == Aeg_certificate_kind::endpoint) failing_endpoints_.insert(e.index);
+    else transient_.erase(e.index);
+  }
+  std::sort(b.failing.begin(), b.failing.end(), before);
+  std::vector<std::size_t> tops;
+  for (const std::size_t r : named) {
+    bool nested = false;
+    for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+      nested = named.count(static_cast<std::size_t>(a)) > 0;
+    if (!nested) tops.push_back(r);
+  }
+  b.changed = replay(tops, b);
+  // Every failing transient node and endpoint certificate lay below a root,
+  // and was made again there; a flip's is made again here.
+  for (const std::size_t s : turning) make_flip(s);
+  failing_endpoints_.clear();
+  next_event_time();  // up to the next queue minimum: stale entries off the heap
+  b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  b.certificates = certificates();
   return b;
 }
 

@@ -294,6 +294,28 @@ void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Cros
   }
 }
 
+std::vector<Site_point> crossings_below(const Cylindrical_bsp& bsp, std::size_t v) {
+  std::vector<Site_point> x;
+  for (const std::size_t n : bsp.preorder(v))
+    if (bsp.nodes[n].kind == Cut_kind::intersection) x.push_back(bsp.nodes[n].point);
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  return x;
+}
+
+void unlog_crossings(Build_log& log, const std::set<std::size_t>& nodes, const std::vector<Site_point>& gone) {
+  if (gone.empty()) return;
+  for (const std::size_t a : nodes) {
+    auto& at = log.at[a];
+    at.erase(std::remove_if(at.begin(), at.end(),
+                            [&](const Arrival& x) {
+                              return x.kind == Arrival::Kind::intersection &&
+                                     std::binary_search(gone.begin(), gone.end(), x.a);
+                            }),
+             at.end());
+  }
+}
+
 std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank) {
   switch (node.kind) {
     case Cut_kind::leaf: return rank.size();

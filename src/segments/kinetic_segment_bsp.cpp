@@ -197,16 +197,6 @@ void Kinetic_segment_bsp<K>::forget(std::size_t node) {
 }
 
 template <class K>
-std::vector<Site_point> Kinetic_segment_bsp<K>::crossings_below(std::size_t v) const {
-  std::vector<Site_point> x;
-  for (const std::size_t n : tree_.preorder(v))
-    if (tree_.nodes[n].kind == Cut_kind::intersection) x.push_back(tree_.nodes[n].point);
-  std::sort(x.begin(), x.end());
-  x.erase(std::unique(x.begin(), x.end()), x.end());
-  return x;
-}
-
-template <class K>
 bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const std::vector<std::int32_t>& failing,
                                     std::size_t& added) {
   // A subtree holding a failing node changes: it is not taken whole.
@@ -221,7 +211,7 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   for (const auto& [v, rank] : roots) {
     before.push_back(tree_.text(v));
     arrivals.push_back(log_.at[v]);
-    const std::vector<Site_point> x = crossings_below(v);
+    const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
     if (rank) spare.push_back(set_aside(v, *rank, dirty));
     else {
@@ -237,7 +227,7 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
     if (roots[k].rank) remake_frontier_node(builder, v, *roots[k].rank, arrivals[k], spare[k], dirty, tops);
     else builder.replay(v, arrivals[k]);
     for (const std::size_t o : spare[k]) discard(o, true);
-    const std::vector<Site_point> x = crossings_below(v);
+    const std::vector<Site_point> x = crossings_below(tree_, v);
     is.insert(is.end(), x.begin(), x.end());
     changed = changed || tree_.text(v) != before[k];
   }
@@ -264,15 +254,7 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
     std::int32_t a = tree_.nodes[v].parent;
     while (a >= 0 && above.insert(static_cast<std::size_t>(a)).second) a = tree_.nodes[static_cast<std::size_t>(a)].parent;
   }
-  for (const std::size_t a : above) {
-    auto& log = log_.at[a];
-    log.erase(std::remove_if(log.begin(), log.end(),
-                             [&](const Arrival& x) {
-                               return x.kind == Arrival::Kind::intersection &&
-                                      std::binary_search(gone.begin(), gone.end(), x.a);
-                             }),
-              log.end());
-  }
+  unlog_crossings(log_, above, gone);
   return changed;
 }
 

@@ -15,19 +15,6 @@ namespace kvd::cli {
 
 namespace {
 
-std::string ms_text(double ms) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", ms);
-  return buf;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
-}
-
 template <class K>
 int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
   using Kinetic = segments::Kinetic_segment_bsp<K>;
@@ -72,7 +59,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
                         {"failing", b.failing.size()}, {"events", kinds}, {"changed", b.changed},
                         {"certificates", b.certificates}, {"nodes_rebuilt", b.nodes_rebuilt},
                         {"frontier_replays", b.frontier_replays}, {"subtree_replays", b.subtree_replays},
-                        {"update_ms", decimal(ms_text(b.update_seconds * 1e3))}});
+                        {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
     Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
               {"failures", failures}, {"simultaneous_batches", simultaneous}, {"changed_batches", changed},
@@ -81,8 +68,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               {"validation_failures", kin.validation_failures().size()},
               {"time_reached_exact", k.to_string(kin.now())}, {"time_reached", approx(k.to_double(kin.now()))},
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", kin.certificates()},
-              {"update_ms", {{"mean", decimal(ms_text(mean))}, {"median", decimal(ms_text(median(ms)))},
-                             {"max", decimal(ms_text(max))}}},
+              {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
+                             {"max", decimal(fixed(max, 3))}}},
               {"update", segments::segment_update_names[static_cast<int>(o.update)]},
               {"nodes_rebuilt_median", median(rebuilt)},
               {"replays", {{"frontier", frontier}, {"subtree", subtree}}}, {"filter", filter_json(k)},
@@ -106,8 +93,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
     std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(kin.now())
               << "\nvalidations:   " << kin.validations() << " (" << kin.validation_failures().size() << " failed)"
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << kin.certificates()
-              << " certificates\nupdate (ms):   mean " << ms_text(mean) << ", median " << ms_text(median(ms))
-              << ", max " << ms_text(max) << "\nnodes made:    median " << median(rebuilt) << " a batch ("
+              << " certificates\nupdate (ms):   mean " << fixed(mean, 3) << ", median " << fixed(median(ms), 3)
+              << ", max " << fixed(max, 3) << "\nnodes made:    median " << median(rebuilt) << " a batch ("
               << segments::segment_update_names[static_cast<int>(o.update)] << ")\n";
     if (o.update != segments::Segment_update::rebuild)
       std::cout << "replays:       " << frontier << " at the frontier, " << subtree << " of whole subtrees\n";

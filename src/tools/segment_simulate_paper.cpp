@@ -1,8 +1,10 @@
 // kvd simulate --certificates paper on a segment scene: the run on seed
 // 003's own certificate set (kvd/segments/aeg_kinetic_bsp.hpp), its batches
 // and the certificates that fail in them.
+#include <algorithm>
 #include <array>
 #include <iostream>
+#include <numeric>
 
 #include "json_out.hpp"
 #include "kvd/kernel/convert.hpp"
@@ -27,13 +29,20 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   std::vector<Run::Batch> batches;
   const std::string stopped = run_batches(run, k, o, batches);
   std::size_t failures = 0, changed = 0, simultaneous = 0;
+  std::size_t replays = 0;
   std::array<std::size_t, 3> by_kind{};
+  std::vector<double> ms, made;
   for (const Run::Batch& b : batches) {
     failures += b.failing.size();
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
+    replays += b.replays;
     for (const auto& id : b.failing) ++by_kind[static_cast<std::size_t>(id.kind)];
+    ms.push_back(b.update_seconds * 1e3);
+    made.push_back(static_cast<double>(b.nodes_rebuilt));
   }
+  const double mean = ms.empty() ? 0 : std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
+  const double max = ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end());
   const segments::Bsp_counts c = run.tree().counts();
   if (sa.json) {
     Json kinds = Json::object();
@@ -44,14 +53,19 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               {"validation", o.validate ? "every" : "none"}, {"validations", run.validations()},
               {"validation_failures", run.validation_failures().size()},
               {"time_reached_exact", k.to_string(run.now())}, {"time_reached", approx(k.to_double(run.now()))},
-              {"nodes", c.nodes}, {"height", c.height}, {"certificates", run.certificates()}};
+              {"nodes", c.nodes}, {"height", c.height}, {"certificates", run.certificates()},
+              {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
+                             {"max", decimal(fixed(max, 3))}}},
+              {"nodes_rebuilt_median", median(made)}, {"replays", replays}};
     if (o.list) {
       Json list = Json::array();
       for (const auto& b : batches) {
         Json failing = Json::array();
         for (const auto& id : b.failing) failing.push_back({{"kind", kind_text(id.kind)}, {"of", segments::aeg_certificate_subject(id)}});
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
-                        {"failing", failing}, {"changed", b.changed}, {"certificates", b.certificates}});
+                        {"failing", failing}, {"changed", b.changed}, {"certificates", b.certificates},
+                        {"replays", b.replays}, {"nodes_rebuilt", b.nodes_rebuilt},
+                        {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
       j["batch_list"] = list;
     }
@@ -72,7 +86,9 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
     std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(run.now())
               << "\nvalidations:   " << run.validations() << " (" << run.validation_failures().size() << " failed)"
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << run.certificates()
-              << " certificates\n";
+              << " certificates\nupdate (ms):   mean " << fixed(mean, 3) << ", median " << fixed(median(ms), 3)
+              << ", max " << fixed(max, 3) << "\nnodes made:    median " << median(made) << " a batch (" << replays
+              << " subtrees replayed)\n";
   }
   for (const auto& f : run.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";
   return run.validation_failures().empty() ? 0 : 1;

@@ -43,9 +43,13 @@ Aeg_state aeg_state(const Segment_predicates<K>& pred, const typename K::Time& t
 
 // The neighbours of endpoint e read off the tree b built at t: the floor and
 // the roof of the leaf that holds the points just beside e on the side away
-// from its segment (-1: none). The same as aeg_state's, in O(depth) instead
+// from its segment (aeg_leaf; -1: none). The same as aeg_state's, in O(depth) instead
 // of O(n): that leaf's near wall is e's, so its floor and roof hold x(e) in
 // their x-ranges, and a segment between them and e would cross the leaf.
+// The walk starts at `from`, an ancestor of that leaf (the root by default).
+template <class K>
+std::size_t aeg_leaf(const Cylindrical_bsp& b, const Segment_predicates<K>& pred, const typename K::Time& t,
+                     std::size_t e, std::size_t from = 0);
 template <class K>
 std::array<std::int64_t, 2> aeg_neighbours(const Cylindrical_bsp& b, const Segment_predicates<K>& pred,
                                            const typename K::Time& t, std::size_t e);

@@ -16,21 +16,32 @@
 //   (proofs/segment-certificates.md);
 // - segment: the x order of its two endpoints.
 //
-// This is the paper's event detection, not yet its update: at each batch the
-// tree and the certificates are built again at now, where the paper changes
-// O(1) of them by its surgeries (LeftShave, the splits), which are not
-// implemented. Kinetic_segment_bsp is the structure with local updates; it
-// keeps every sign its construction decides, O(n log n + k) against these
-// O(n + k). The tests compare the two runs' batches: the tree changes at
-// exactly the failures of this set. Exact kernel only.
+// The update is local, though not the paper's surgery (LeftShave, the
+// splits, which are not implemented): each failing certificate names the
+// cuts it is about (a transient node's walls, floor and roof; an endpoint's
+// vertex cut, its neighbours' edge cuts and their endpoints' vertex cuts; a
+// flipping segment's cuts), and the subtree of the topmost of those on the
+// certificate's path is replayed from the construction's log
+// (kvd/detail/segments/bsp_builder.hpp): the sign that changed was decided
+// at one of them, and the arrivals above it stay; or higher, where a cut
+// above passes through the event's point at that instant (above_ties). Only the certificates of
+// the nodes and endpoints there are made again. Kinetic_segment_bsp keeps
+// every sign its construction decides, O(n log n + k) against these
+// O(n + k), and finds the nodes to replay from them; the tests compare the
+// two runs batch by batch. Exact kernel only.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "kvd/detail/kinetic/root_cache.hpp"
+#include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 
 namespace kvd::segments {
@@ -59,9 +70,12 @@ public:
 
   struct Batch {
     Time time;
-    std::vector<Aeg_certificate_id> failing;  // transient nodes in pre-order, then endpoints, then segments
+    std::vector<Aeg_certificate_id> failing;  // by kind (transient, endpoint, flip), then cell or index
     bool changed = false;                     // the tree just after differs from the one before
     std::size_t certificates = 0;             // in force after the batch
+    std::size_t replays = 0;                  // subtrees replayed
+    std::size_t nodes_rebuilt = 0;            // nodes made again
+    double update_seconds = 0;                // the tree and its certificates made again
   };
 
   // The scene is copied; the run starts at its start. With `validate`, the
@@ -74,10 +88,11 @@ public:
   Aeg_kinetic_bsp& operator=(const Aeg_kinetic_bsp&) = delete;
 
   const Time& now() const { return now_; }
-  const Cylindrical_bsp& tree() const { return tree_; }
-  std::size_t certificates() const { return certs_.size(); }
+  // The tree in force, numbered afresh (the run edits its own in place).
+  Cylindrical_bsp tree() const { return tree_.compacted(); }
+  std::size_t certificates() const { return transient_.size() + endpoint_.size() + flip_.size(); }
   // The earliest failure after now, within the scene's span.
-  std::optional<Time> next_event_time() const;
+  std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
   Batch advance();
   // The validations that found the tree in force different from a fresh
@@ -90,13 +105,55 @@ private:
   struct Certificate {
     Aeg_certificate_id id;
     std::optional<Time> fails;  // within the span
+    std::uint64_t version = 0;  // queue entries of another version are stale
+    Cell near;                  // an endpoint's: the leaf beside it, whose floor and roof it reads
   };
-  // The tree and the certificates just after now.
-  void make();
-  // The certificate's failure: the first root after now of the polynomials
-  // that decided the signs `decide` asks for.
+  // Cells in the order of their walls, floor and roof.
+  struct Cell_less {
+    bool operator()(const Cell& a, const Cell& b) const {
+      return std::tie(a.left, a.right, a.floor, a.roof) < std::tie(b.left, b.right, b.floor, b.roof);
+    }
+  };
+  struct Entry {
+    Time time;
+    Aeg_certificate_kind kind;
+    std::size_t index;  // the transient node's slot, the endpoint or the segment
+    std::uint64_t version;
+  };
+
+  // The tree, its log and every certificate just after now.
+  void rebuild();
+  // The certificate made again and queued at its failure: the first root
+  // after now of the polynomials of the signs `decide` asks for.
   template <class F>
-  void add(const Aeg_certificate_id& id, F decide);
+  void make(Certificate& c, F decide, std::size_t index);
+  // A transient node's certificate: taken from spare_ when a node of a
+  // replayed subtree had the same cell (the same signs, so the same failure
+  // time: it has not failed), else made.
+  void make_transient(std::size_t node);
+  // An endpoint's, its leaf found from `from` (an ancestor of it): kept when
+  // its floor and roof are the same and it is not failing now, else made.
+  void make_endpoint(std::size_t e, std::size_t from = 0);
+  void make_flip(std::size_t s);
+  // The subtrees to replay for a failing certificate (see above).
+  std::vector<std::size_t> roots(const Entry& e) const;
+  // The topmost of `top` and its ancestors whose cut `at` meets at now (a
+  // sign there is zero at now and decided just after, or by the
+  // perturbation): a change at `at` may cross that cut, as where a crossing
+  // born at an endpoint lies on the other side of a wall with the same
+  // abscissa.
+  std::size_t above_ties(std::size_t top, const Site_point& at) const;
+  // Replays the subtrees of `roots` (none below another) and makes their
+  // certificates again; whether the tree changed.
+  bool replay(const std::vector<std::size_t>& roots, Batch& b);
+  // Makes the certificates of the transient nodes in v's subtree (a node is
+  // transient when its parent is a point cut and no point cut lies in its
+  // subtree); whether a point cut lies there.
+  bool certify_below(std::size_t v);
+  bool points_below(std::size_t v) const;
+  bool stale(const Entry& e) const;
+  void push(const Entry& e);
+  void pop();
 
   K k_;
   Segment_scene scene_;
@@ -106,8 +163,18 @@ private:
   Time end_;
   Segment_predicates<K> pred_;
   Cylindrical_bsp tree_;
-  std::vector<Certificate> certs_;
-  std::vector<P> polys_;  // of the certificate being made
+  Build_log log_;
+  std::map<std::size_t, Certificate> transient_;  // by node slot
+  // During an update: the certificates of the transient nodes of the
+  // replayed subtrees (failing ones left out), and the failing endpoints.
+  std::map<Cell, Certificate, Cell_less> spare_;
+  std::set<std::size_t> failing_endpoints_;
+  std::vector<Certificate> endpoint_, flip_;
+  std::vector<std::size_t> leaf_;  // per endpoint: the leaf beside it (aeg_neighbours)
+  std::map<std::size_t, std::vector<std::size_t>> beside_;  // per leaf slot: the endpoints it is beside
+  std::vector<Entry> queue_;       // a min-heap on time
+  std::uint64_t versions_ = 0;
+  std::vector<P> polys_;           // of the certificate being made
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;

@@ -239,8 +239,6 @@ private:
   void forget(std::size_t node);
   // The key's decision at the node goes (drop), and the node's entry of it.
   void unrecord(const Segment_certificate_key& key, std::int32_t node);
-  // The crossings with an intersection cut in the subtree of v.
-  std::vector<Site_point> crossings_below(std::size_t v) const;
   // Removes the certificate's decision at `node`; with its last, the
   // certificate goes to limbo_.
   void drop(const Segment_certificate_key& key, std::int32_t node);

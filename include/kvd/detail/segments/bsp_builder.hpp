@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,15 @@ std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& nod
 // The arrivals of the segment of rank r in a log (a range: a log is in rank order).
 std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
                                                std::size_t r);
+
+// The crossings with an intersection cut in the subtree of v, sorted, each once.
+std::vector<Site_point> crossings_below(const Cylindrical_bsp& bsp, std::size_t v);
+
+// A replay below a node logs there, and up to the root, where it locates a
+// crossing it finds; a crossing it no longer finds was logged there too.
+// Takes the locations of the crossings `gone` (sorted) out of the logs of
+// `nodes`.
+void unlog_crossings(Build_log& log, const std::set<std::size_t>& nodes, const std::vector<Site_point>& gone);
 
 // The segment an intersection arrival's segment crosses there.
 inline std::uint32_t other_segment(const Arrival& c) { return c.a.a == c.segment ? c.a.b : c.a.a; }
