@@ -141,8 +141,9 @@ TEST_CASE("the paper's certificates fail exactly where the tree changes", "[segm
   CHECK(c.replays >= c.batches);
 }
 
-// The same on 50 scenes of seven segments on small integers, half or all
-// moving (test_kinetic_segments' random scenes), up to t = 1: ties and
+// The same on the 49 valid scenes of seven segments on small integers (seeds
+// 1 to 50), half or all moving (test_kinetic_segments' random scenes), up to
+// t = 1: ties and
 // simultaneous events at rational instants everywhere.
 TEST_CASE("the paper's certificates on small integer scenes", "[segments][aeg]") {
   Compared c;

@@ -91,7 +91,7 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, F decide, std::size_t index) {
   }
   // A failure after the span's end is no event.
   if (c.fails && bounded_ && k_.compare(*c.fails, end_) > 0) c.fails.reset();
-  if (c.fails) push({*c.fails, c.id.kind, index, c.version});
+  if (c.fails) queue_.push({*c.fails, c.id.kind, index, c.version});
 }
 
 template <class K>
@@ -102,7 +102,7 @@ void Aeg_kinetic_bsp<K>::make_transient(std::size_t v) {
     cert = it->second;
     spare_.erase(it);
     cert.version = ++versions_;
-    if (cert.fails) push({*cert.fails, Aeg_certificate_kind::transient, v, cert.version});
+    if (cert.fails) queue_.push({*cert.fails, Aeg_certificate_kind::transient, v, cert.version});
     return;
   }
   cert.id = {Aeg_certificate_kind::transient, 0, c};
@@ -305,24 +305,8 @@ bool Aeg_kinetic_bsp<K>::stale(const Entry& e) const {
 }
 
 template <class K>
-void Aeg_kinetic_bsp<K>::push(const Entry& e) {
-  queue_.push_back(e);
-  std::push_heap(queue_.begin(), queue_.end(),
-                 [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
-}
-
-template <class K>
-void Aeg_kinetic_bsp<K>::pop() {
-  std::pop_heap(queue_.begin(), queue_.end(),
-                [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
-  queue_.pop_back();
-}
-
-template <class K>
 std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
-  while (!queue_.empty() && stale(queue_.front())) pop();
-  if (queue_.empty()) return std::nullopt;
-  return queue_.front().time;
+  return queue_.next([this](const Entry& e) { return stale(e); });
 }
 
 template <class K>
@@ -341,9 +325,9 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   now_ = b.time;
   std::set<std::size_t> named;
   std::vector<std::size_t> turning;
-  while (!queue_.empty() && (stale(queue_.front()) || k_.compare(queue_.front().time, b.time) == 0)) {
-    const Entry e = queue_.front();
-    pop();
+  while (!queue_.empty() && (stale(queue_.top()) || k_.compare(queue_.top().time, b.time) == 0)) {
+    const Entry e = queue_.top();
+    queue_.pop();
     if (stale(e)) continue;
     const Certificate& c = e.kind == Aeg_certificate_kind::transient ? transient_.at(e.index)
                            : e.kind == Aeg_certificate_kind::endpoint ? endpoint_[e.index]

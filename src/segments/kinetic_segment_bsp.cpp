@@ -127,21 +127,7 @@ void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certif
     if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
   }
   // A failure after the span's end is no event.
-  if (first && !(bounded_ && k_.compare(*first, end_) > 0)) push({*first, key, c.version});
-}
-
-template <class K>
-void Kinetic_segment_bsp<K>::push(const Entry& e) {
-  queue_.push_back(e);
-  std::push_heap(queue_.begin(), queue_.end(),
-                 [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
-}
-
-template <class K>
-void Kinetic_segment_bsp<K>::pop() {
-  std::pop_heap(queue_.begin(), queue_.end(),
-                [&](const Entry& a, const Entry& b) { return k_.compare(a.time, b.time) > 0; });
-  queue_.pop_back();
+  if (first && !(bounded_ && k_.compare(*first, end_) > 0)) queue_.push({*first, key, c.version});
 }
 
 template <class K>
@@ -260,9 +246,7 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
 
 template <class K>
 std::optional<typename K::Time> Kinetic_segment_bsp<K>::next_event_time() {
-  while (!queue_.empty() && stale(queue_.front())) pop();
-  if (queue_.empty()) return std::nullopt;
-  return queue_.front().time;
+  return queue_.next([this](const Entry& e) { return stale(e); });
 }
 
 template <class K>
@@ -275,13 +259,13 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   const Time t = *next_event_time();
   Batch b{t, {}, {}, false, 0, 0, 0};
   std::vector<Failing> failing;
-  while (!queue_.empty() && (stale(queue_.front()) || k_.compare(queue_.front().time, t) == 0)) {
-    if (!stale(queue_.front())) {
-      const auto& key = queue_.front().key;
+  while (!queue_.empty() && (stale(queue_.top()) || k_.compare(queue_.top().time, t) == 0)) {
+    if (!stale(queue_.top())) {
+      const auto& key = queue_.top().key;
       b.failing.push_back(key);
       failing.emplace_back(key, certs_.at(key).nodes);
     }
-    pop();
+    queue_.pop();
   }
   std::sort(b.failing.begin(), b.failing.end());
   b.failing.erase(std::unique(b.failing.begin(), b.failing.end()), b.failing.end());

@@ -108,8 +108,9 @@ const char* const simulate_help =
     "default is kept), the run holds only seed 003's own set instead: one\n"
     "certificate per transient node, per endpoint (its neighbours above and\n"
     "below) and per segment (a flip), each a few signs with exact failure\n"
-    "times; the tree is built again after each batch (the paper's surgery is\n"
-    "not implemented), and --list names the certificates that fail. Takes\n"
+    "times; each batch replays the subtrees its failing certificates name\n"
+    "(the paper's surgery is not implemented), and --list names the\n"
+    "certificates that fail. Takes\n"
     "--events, --until, --validate every|none, --update, --certificates,\n"
     "--kernel, --epsilon, --no-filter, --list, --json\n"
     "(failures_by_event, changed_batches_by_event, batches, validations,\n"
@@ -404,7 +405,7 @@ int simulate(Args& args) {
     if (paper && kernel != "exact")
       throw Usage_error("kvd simulate: --certificates paper runs in the exact kernel only");
     if (paper && (update || subtree))
-      throw Usage_error("kvd simulate: --certificates paper builds the tree again after each batch; it takes no --update");
+      throw Usage_error("kvd simulate: --certificates paper has an update of its own; it takes no --update");
     if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
     refuse_triangle_flags("simulate", triangle_only);
     if (o.validate == kinetic::Validation::end)

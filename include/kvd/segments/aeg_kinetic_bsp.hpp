@@ -22,13 +22,15 @@
 // vertex cut, its neighbours' edge cuts and their endpoints' vertex cuts; a
 // flipping segment's cuts), and the subtree of the topmost of those on the
 // certificate's path is replayed from the construction's log
-// (kvd/detail/segments/bsp_builder.hpp): the sign that changed was decided
-// at one of them, and the arrivals above it stay; or higher, where a cut
-// above passes through the event's point at that instant (above_ties). Only the certificates of
-// the nodes and endpoints there are made again. Kinetic_segment_bsp keeps
-// every sign its construction decides, O(n log n + k) against these
-// O(n + k), and finds the nodes to replay from them; the tests compare the
-// two runs batch by batch. Exact kernel only.
+// (kvd/detail/segments/bsp_builder.hpp), or of a cut higher up that passes
+// through the event's point at that instant (above_ties). The argument that
+// this subtree holds every change (the changed sign is decided at one of
+// those cuts, and the arrivals above it stay) is by the cases of
+// proofs/segment-certificates.md, and is checked against the run that keeps
+// every sign, batch by batch, not proved. Only the certificates of the nodes
+// and endpoints there are made again. Kinetic_segment_bsp keeps every sign
+// its construction decides, O(n log n + k) against these O(n + k), and finds
+// the nodes to replay from them. Exact kernel only.
 #pragma once
 
 #include <cstddef>
@@ -41,6 +43,7 @@
 #include <vector>
 
 #include "kvd/detail/kinetic/root_cache.hpp"
+#include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 
@@ -152,8 +155,6 @@ private:
   bool certify_below(std::size_t v);
   bool points_below(std::size_t v) const;
   bool stale(const Entry& e) const;
-  void push(const Entry& e);
-  void pop();
 
   K k_;
   Segment_scene scene_;
@@ -172,7 +173,7 @@ private:
   std::vector<Certificate> endpoint_, flip_;
   std::vector<std::size_t> leaf_;  // per endpoint: the leaf beside it (aeg_neighbours)
   std::map<std::size_t, std::vector<std::size_t>> beside_;  // per leaf slot: the endpoints it is beside
-  std::vector<Entry> queue_;       // a min-heap on time
+  kinetic::Time_heap<K, Entry> queue_{k_};
   std::uint64_t versions_ = 0;
   std::vector<P> polys_;           // of the certificate being made
   kinetic::Root_cache<K> roots_;

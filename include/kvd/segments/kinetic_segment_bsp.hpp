@@ -59,6 +59,7 @@
 #include <vector>
 
 #include "kvd/detail/kinetic/root_cache.hpp"
+#include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
@@ -242,8 +243,6 @@ private:
   // Removes the certificate's decision at `node`; with its last, the
   // certificate goes to limbo_.
   void drop(const Segment_certificate_key& key, std::int32_t node);
-  void push(const Entry& e);
-  void pop();
   bool stale(const Entry& e) const;
 
   K k_;
@@ -269,7 +268,7 @@ private:
   // The certificate keys naming each segment, for set_motion (see index()).
   std::vector<std::unordered_set<Segment_certificate_key, Segment_certificate_key_hash>> by_segment_;
   std::size_t indexed_ = 0;  // keys added to by_segment_ since it was last made
-  std::vector<Entry> queue_;                                     // a min-heap on time
+  kinetic::Time_heap<K, Entry> queue_{k_};
   std::uint64_t versions_ = 0;
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;

@@ -1,0 +1,47 @@
+// A min-heap of queue entries on their failure time (a `time` member),
+// compared by the kernel: exactly in the exact kernel. Entries go stale
+// instead of being removed (their certificate made again or gone); the
+// caller says which are, and they are dropped when they reach the top.
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+namespace kvd::kinetic {
+
+template <class K, class Entry>
+class Time_heap {
+public:
+  // The kernel must outlive the heap.
+  explicit Time_heap(const K& k) : k_(&k) {}
+
+  bool empty() const { return entries_.empty(); }
+  const Entry& top() const { return entries_.front(); }
+  void clear() { entries_.clear(); }
+  void push(const Entry& e) {
+    entries_.push_back(e);
+    std::push_heap(entries_.begin(), entries_.end(), later());
+  }
+  void pop() {
+    std::pop_heap(entries_.begin(), entries_.end(), later());
+    entries_.pop_back();
+  }
+  // The stale entries off the top; the earliest live entry's time.
+  template <class Stale>
+  std::optional<typename K::Time> next(Stale stale) {
+    while (!empty() && stale(top())) pop();
+    if (empty()) return std::nullopt;
+    return top().time;
+  }
+
+private:
+  auto later() const {
+    return [k = k_](const Entry& a, const Entry& b) { return k->compare(a.time, b.time) > 0; };
+  }
+
+  const K* k_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace kvd::kinetic
