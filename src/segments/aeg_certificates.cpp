@@ -12,8 +12,6 @@ namespace kvd::segments {
 
 namespace {
 
-bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
-
 // Whether the subtree of v holds a point cut; the transient nodes below v
 // are appended to `out` in pre-order. A transient node has none below it,
 // so appending it after its subtree keeps the order.

@@ -16,8 +16,6 @@ namespace kvd::segments {
 
 namespace {
 
-bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
-
 // Failures in the order Batch::failing keeps.
 bool before(const Aeg_certificate_id& a, const Aeg_certificate_id& b) {
   return std::tie(a.kind, a.index, a.cell.left, a.cell.right, a.cell.floor, a.cell.roof) <
@@ -84,11 +82,7 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, F decide, std::size_t index) {
   decide();
   pred_.record({});
   c.version = ++versions_;
-  c.fails.reset();
-  for (const P& q : polys_) {
-    const auto& r = roots_.next_root(k_, q, now_);
-    if (r && (!c.fails || k_.compare(*r, *c.fails) < 0)) c.fails = r;
-  }
+  c.fails = roots_.first_root(k_, polys_, now_);
   // A failure after the span's end is no event.
   if (c.fails && bounded_ && k_.compare(*c.fails, end_) > 0) c.fails.reset();
   if (c.fails) queue_.push({*c.fails, c.id.kind, index, c.version});

@@ -121,11 +121,7 @@ std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::adva
 template <class K>
 void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certificate& c) {
   c.version = ++versions_;
-  std::optional<Time> first;
-  for (const auto& q : c.polys) {
-    const auto& r = roots_.next_root(k_, q, now_);
-    if (r && (!first || k_.compare(*r, *first) < 0)) first = r;
-  }
+  const std::optional<Time> first = roots_.fails(k_, c, now_);
   // A failure after the span's end is no event.
   if (first && !(bounded_ && k_.compare(*first, end_) > 0)) queue_.push({*first, key, c.version});
 }

@@ -32,6 +32,8 @@ struct Segment_run_options {
 };
 
 int segment_simulate(const Scene_args& sa, const std::string& text, const Segment_run_options& o);
+// The same with o.paper (src/tools/segment_simulate_paper.cpp).
+int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 
 // Advances `run` (a kinetic segment BSP of kernel k) batch by batch up to
 // o.until or the batch holding the o.max_events-th failure, appending each
@@ -53,8 +55,6 @@ std::string run_batches(Run& run, const K& k, const Segment_run_options& o,
   }
   return "exhausted";
 }
-// The same with o.paper (src/tools/segment_simulate_paper.cpp).
-int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 
 struct Segment_certify_options {
   std::string out;

@@ -23,7 +23,7 @@ const char* kind_text(Aeg_certificate_kind k) { return segments::aeg_certificate
 }  // namespace
 
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
-  const Exact_kernel k;
+  const Exact_kernel k(o.filter);  // --no-filter: every sign in exact arithmetic
   using Run = segments::Aeg_kinetic_bsp<Exact_kernel>;
   Run run(k, s, o.validate);
   std::vector<Run::Batch> batches;

@@ -49,6 +49,10 @@ struct Bsp_node {
   Cell cell;                    // this node's region
 };
 
+// Whether a node's cut is vertical, through a point (a vertex or an
+// intersection cut).
+inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
+
 struct Bsp_counts {
   std::size_t vertex_cuts = 0, intersection_cuts = 0, edge_cuts = 0;
   std::size_t nodes = 0, leaves = 0;

@@ -49,15 +49,19 @@ public:
     return it->second;
   }
 
-  // The earliest of the certificate's polynomials' next roots after now.
-  template <class Certificate>
-  std::optional<Time> fails(const K& k, const Certificate& cert, const Time& now) {
+  // The earliest of the polynomials' next roots after now.
+  std::optional<Time> first_root(const K& k, const std::vector<typename K::Poly>& polys, const Time& now) {
     std::optional<Time> first;
-    for (const auto& q : cert.polys) {
+    for (const auto& q : polys) {
       const auto& r = next_root(k, q, now);
       if (r && (!first || k.compare(*r, *first) < 0)) first = r;
     }
     return first;
+  }
+  // The earliest of the certificate's polynomials' next roots after now.
+  template <class Certificate>
+  std::optional<Time> fails(const K& k, const Certificate& cert, const Time& now) {
+    return first_root(k, cert.polys, now);
   }
 
 private:
