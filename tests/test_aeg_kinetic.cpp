@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "segment_scenes.hpp"
+#include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/segments/aeg_certificates.hpp"
 #include "kvd/segments/aeg_kinetic_bsp.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
@@ -66,9 +67,28 @@ TEST_CASE("a segment over an endpoint: the paper's certificates fail at the two 
 
 namespace {
 
+// Whether the run's log is a fresh construction's just after t, node by
+// node in pre-order: what the flips done in place and the replays edit is
+// what later replays start from.
+bool same_log(const Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predicates<Exact_kernel>& pred, const Exact_time& t) {
+  Cylindrical_bsp fresh;
+  Build_log log;
+  Bsp_builder<Exact_kernel> builder(pred, t, fresh, &log);
+  builder.start();
+  for (const std::size_t s : pred.scene().priority_order) builder.insert(static_cast<std::uint32_t>(s));
+  const std::vector<std::size_t> a = run.edited_tree().preorder(), b = fresh.preorder();
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (run.log().at[a[k]] != log.at[b[k]]) {
+      UNSCOPED_INFO("the logs differ at the node " << k << " in pre-order");
+      return false;
+    }
+  return true;
+}
+
 // What side_by_side counts.
 struct Compared {
-  std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0;
+  std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0, flipped = 0;
   std::array<std::size_t, 3> caught{};  // batches where a certificate of each kind fails
 };
 
@@ -99,8 +119,10 @@ void side_by_side(const std::string& name, const Segment_scene& s, bool neighbou
     ++c.batches;
     c.replays += b.replays;
     c.nodes_rebuilt += b.nodes_rebuilt;
+    c.flipped += b.flipped_in_place > 0;
     INFO(name << ": batch at t = " << b.time.to_string());
     CHECK(b.changed);
+    CHECK(same_log(run, pred, b.time));
     REQUIRE(next(kept));
     REQUIRE(kernel.compare(*next(kept), b.time) == 0);
     kept.advance();
@@ -136,9 +158,9 @@ TEST_CASE("the paper's certificates fail exactly where the tree changes", "[segm
   // Every batch of the kept run changes the tree on these scenes.
   CHECK(c.kept_batches == c.batches);
   for (const std::size_t k : c.caught) CHECK(k > 0);
-  // The update replays subtrees, not the tree: fewer nodes than a
-  // construction per batch would make.
-  CHECK(c.replays >= c.batches);
+  // The update replays subtrees, not the tree, or turns a flip in place.
+  CHECK(c.replays + c.flipped >= c.batches);
+  CHECK(c.flipped > 0);
 }
 
 // The same on the 49 valid scenes of seven segments on small integers (seeds
@@ -151,4 +173,41 @@ TEST_CASE("the paper's certificates on small integer scenes", "[segments][aeg]")
     if (const auto s = kvd::test::small_integer_scene(seed))
       side_by_side("seed " + std::to_string(seed), *s, false, c, Exact_time(1));
   CHECK(c.batches > 100);
+}
+
+// Section 3.1.4's flip, done in place. s0 turns through vertical at t = 1
+// about (10, 0), under s3 and crossed by the later s1 and s2; s4 lies beside
+// it. Alone, the flip is done in place: the same tree and log as the run
+// keeping every sign and a fresh build. Three flips that meet another event
+// at their instant are replayed instead; done in place, each would leave a
+// wrong tree:
+// - s2's crossing with s1 reaches s0 at t = 1 from outside the strip between
+//   s0's point cuts and stays beside s0.0's wall (x(s1 x s2) - x(s0.0) =
+//   -(t - 1)^2): three segments concurrent, seen only at a corner of a cell
+//   between s0's cuts;
+// - far away, the crossing of s7 and s8 passes s5.1's wall: only transient
+//   certificates outside the flip's subtrees fail with it;
+// - s6 passes over s5.1, as in the first test: only an endpoint certificate
+//   fails with it.
+TEST_CASE("a lone flip is done in place, and a flip meeting another event is replayed", "[segments][aeg]") {
+  const auto s0 = moving(linear(9, 1), linear(-2, 0), linear(11, -1), linear(2, 0));
+  const auto s1 = fixed(5, 1, 15, 1), s2 = fixed(5, -1, 15, -1);
+  const auto s3 = fixed(0, 5, 20, 5), s4 = fixed(12, -3, 14, 3);
+  const auto flips = [&](const std::string& name, std::vector<Segment> segs, std::vector<std::size_t> order) {
+    Compared c;
+    side_by_side(name, scene_of(std::move(segs), std::move(order), 0, 2), false, c);
+    CHECK(c.kept_batches == c.batches);
+    // Every scene has its flip batch.
+    CHECK(c.caught[static_cast<std::size_t>(Aeg_certificate_kind::flip)] == 1);
+    return c.flipped;
+  };
+  CHECK(flips("lone", {s0, s1, s2, s3, s4}, {3, 0, 1, 2, 4}) == 1);
+  const QPoly x0({mpq_class(7), mpq_class(3), mpq_class(-1)}), x1({mpq_class(9), mpq_class(3), mpq_class(-1)});
+  CHECK(flips("tangent", {s0, fixed(5, 0, 15, 0), moving(x0, linear(-3, 0), x1, linear(3, 0)), s3}, {3, 0, 1, 2}) == 0);
+  const auto s5 = fixed(27, 4, 34, 4);
+  CHECK(flips("crossing", {s0, s1, s2, s3, s4, s5, fixed(29, 3, 39, 3), fixed(28, -3, 40, 1),
+                           moving(linear(30, 1), linear(-10, 0), linear(35, 1), linear(5, 0))},
+              {3, 0, 1, 2, 4, 5, 6, 7, 8}) == 0);
+  CHECK(flips("endpoint", {s0, s1, s2, s3, s4, fixed(30, 0, 34, 0), moving(linear(32, 0), linear(2, -1), linear(36, 0), linear(0, -1))},
+              {3, 0, 1, 2, 4, 5, 6}) == 0);
 }

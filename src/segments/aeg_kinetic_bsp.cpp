@@ -184,18 +184,8 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
       break;
     }
     case Aeg_certificate_kind::flip: {
-      // Every cut of the segment with none of its cuts above it.
-      std::vector<std::size_t> out;
-      std::vector<std::pair<std::size_t, bool>> stack{{0, false}};
-      while (!stack.empty()) {
-        const auto [v, below] = stack.back();
-        stack.pop_back();
-        const Bsp_node& n = tree_.nodes[v];
-        const bool own = n.kind == Cut_kind::edge ? n.segment == e.index : point_cut(n) && n.point.on(e.index);
-        if (own && !below) out.push_back(v);
-        if (own || n.kind == Cut_kind::leaf) continue;  // a replay of v remakes what lies below
-        for (const std::int32_t c : n.child) stack.emplace_back(static_cast<std::size_t>(c), below);
-      }
+      // A replay of the segment's first cuts remakes what lies below them.
+      std::vector<std::size_t> out = tops(e.index);
       for (std::size_t& r : out) r = above_ties(r, Site_point::endpoint(2 * e.index));
       return out;
     }
@@ -211,6 +201,27 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
   // a transient cell's walls, which meet there or at which floor and roof
   // meet).
   return {above_ties(top, points.front())};
+}
+
+template <class K>
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::tops(std::size_t s) const {
+  const std::size_t r = scene_.rank[s];
+  std::vector<std::size_t> out, stack{0};
+  while (!stack.empty()) {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    const Bsp_node& n = tree_.nodes[v];
+    if (cut_rank(n, scene_.rank) == r) {
+      out.push_back(v);
+      continue;
+    }
+    if (n.kind == Cut_kind::leaf) continue;
+    for (const std::int32_t c : n.child) {
+      const auto [from, to] = rank_block(log_.at[static_cast<std::size_t>(c)], scene_.rank, r);
+      if (from != to) stack.push_back(static_cast<std::size_t>(c));
+    }
+  }
+  return out;
 }
 
 template <class K>
@@ -305,7 +316,7 @@ std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
 
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
-  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0};
+  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0};
   if (validate_) {
     const Time mid = kinetic::between(k_, now_, b.time);
     ++validations_;
@@ -317,7 +328,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   // The failing certificates, and the subtrees they name (none below
   // another), whose ties are read at the batch's instant.
   now_ = b.time;
-  std::set<std::size_t> named;
+  std::set<std::size_t> named, failing_transient;
   std::vector<std::size_t> turning;
   while (!queue_.empty() && (stale(queue_.top()) || k_.compare(queue_.top().time, b.time) == 0)) {
     const Entry e = queue_.top();
@@ -331,17 +342,24 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
     // A failing certificate is made again, not kept.
     if (e.kind == Aeg_certificate_kind::flip) turning.push_back(e.index);
     else if (e.kind == Aeg_certificate_kind::endpoint) failing_endpoints_.insert(e.index);
-    else transient_.erase(e.index);
+    else {
+      transient_.erase(e.index);
+      failing_transient.insert(e.index);
+    }
   }
   std::sort(b.failing.begin(), b.failing.end(), before);
-  std::vector<std::size_t> tops;
-  for (const std::size_t r : named) {
-    bool nested = false;
-    for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-      nested = named.count(static_cast<std::size_t>(a)) > 0;
-    if (!nested) tops.push_back(r);
+  if (turning.size() == 1 && failing_endpoints_.empty() && flip_in_place(turning.front(), failing_transient, b)) {
+    b.changed = true;
+  } else {
+    std::vector<std::size_t> top;
+    for (const std::size_t r : named) {
+      bool nested = false;
+      for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+        nested = named.count(static_cast<std::size_t>(a)) > 0;
+      if (!nested) top.push_back(r);
+    }
+    b.changed = replay(top, b);
   }
-  b.changed = replay(tops, b);
   // Every failing transient node and endpoint certificate lay below a root,
   // and was made again there; a flip's is made again here.
   for (const std::size_t s : turning) make_flip(s);

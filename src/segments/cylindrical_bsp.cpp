@@ -3,6 +3,8 @@
 #include "kvd/segments/cylindrical_bsp.hpp"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -261,21 +263,13 @@ void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Cros
   const auto left = static_cast<std::size_t>(node.child[0]), right = static_cast<std::size_t>(node.child[1]);
   const std::uint32_t i = a.segment;
   const Site_point from = a.a, to = a.b;
-  // The sides of the part's two ends; where they differ, the part splits at
-  // x: the piece (from, x) goes to from's side and (x, to) to to's side, the
-  // piece below or left walked first. Each end is compared on its own, never
-  // one end with the other: the walk is the same whichever end is left, so a
-  // segment turning vertical changes no decision above its own cuts.
+  // The part splits at x where its ends' sides differ (split_walk), the
+  // piece below or left walked first. Since each end is compared on its own,
+  // a segment turning vertical changes no decision above its own cuts.
   const auto go = [&](int at_from, int at_to, const Site_point& x) {
-    if (at_from == 0) at_from = at_to;
-    if (at_to == 0) at_to = at_from;
-    if (at_from == at_to) return walk(at_from > 0 ? right : left, a, leaf, crossing);
-    Arrival first = a, second = a;
-    first.b = x;
-    second.a = x;
-    if (at_from > 0) std::swap(first, second);
-    walk(left, first, leaf, crossing);
-    walk(right, second, leaf, crossing);
+    const auto parts = split_walk(a, at_from, at_to, x);
+    if (parts[0]) walk(left, *parts[0], leaf, crossing);
+    if (parts[1]) walk(right, *parts[1], leaf, crossing);
   };
   switch (node.kind) {
     case Cut_kind::leaf: return;  // stops() above
@@ -292,6 +286,21 @@ void Bsp_builder<K>::walk(std::size_t n, Arrival a, const Leaf& leaf, const Cros
       return go(at_from, at_to, Site_point::crossing(i, j));
     }
   }
+}
+
+std::array<std::optional<Arrival>, 2> split_walk(const Arrival& a, int at_from, int at_to, const Site_point& x) {
+  if (at_from == 0) at_from = at_to;
+  if (at_to == 0) at_to = at_from;
+  if (at_from == at_to) {
+    std::array<std::optional<Arrival>, 2> whole;
+    whole[at_from > 0] = a;
+    return whole;
+  }
+  Arrival first = a, second = a;
+  first.b = x;
+  second.a = x;
+  if (at_from > 0) std::swap(first, second);
+  return {first, second};
 }
 
 std::vector<Site_point> crossings_below(const Cylindrical_bsp& bsp, std::size_t v) {

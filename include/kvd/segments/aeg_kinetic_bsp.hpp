@@ -16,7 +16,15 @@
 //   (proofs/segment-certificates.md);
 // - segment: the x order of its two endpoints.
 //
-// The update is local, though not the paper's surgery (LeftShave, the
+// A lone flip is handled in place, as section 3.1.4 does it: in each leaf of
+// B_{i-1} that the flipping segment s_i meets, its second point cut moves to
+// the other side of its first, the subtrees beside them change places, and
+// below s_i's edge cut between them every intersection cut swaps its
+// children; the cells, logs and certificates of the nodes touched follow
+// (proofs/segment-certificates.md, "Flips in place"). Any other batch, and a
+// flip that meets anything else at its instant, is replayed:
+//
+// the update is local, though not the paper's surgery (LeftShave, the
 // splits, which are not implemented): each failing certificate names the
 // cuts it is about (a transient node's walls, floor and roof; an endpoint's
 // vertex cut, its neighbours' edge cuts and their endpoints' vertex cuts; a
@@ -78,6 +86,8 @@ public:
     std::size_t certificates = 0;             // in force after the batch
     std::size_t replays = 0;                  // subtrees replayed
     std::size_t nodes_rebuilt = 0;            // nodes made again
+    std::size_t flipped_in_place = 0;         // leaves of B_{i-1} of a flip turned in place, not replayed
+    std::size_t nodes_edited = 0;             // nodes whose children, cell or log those edits changed
     double update_seconds = 0;                // the tree and its certificates made again
   };
 
@@ -94,6 +104,10 @@ public:
   // The tree in force, numbered afresh (the run edits its own in place).
   Cylindrical_bsp tree() const { return tree_.compacted(); }
   std::size_t certificates() const { return transient_.size() + endpoint_.size() + flip_.size(); }
+  // The tree in force as the run edits it (unused slots included) and its
+  // construction's log by those slots, for a comparison with a fresh build's.
+  const Cylindrical_bsp& edited_tree() const { return tree_; }
+  const Build_log& log() const { return log_; }
   // The earliest failure after now, within the scene's span.
   std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
@@ -138,6 +152,14 @@ private:
   // its floor and roof are the same and it is not failing now, else made.
   void make_endpoint(std::size_t e, std::size_t from = 0);
   void make_flip(std::size_t s);
+  // The nodes whose cut the insertion of segment s made, none of them below
+  // another: s's first cut in each leaf of B_{i-1} that s meets, found down
+  // the nodes whose log holds an arrival of s.
+  std::vector<std::size_t> tops(std::size_t s) const;
+  // Segment s's flip done in place (see above) when it is a lone one, every
+  // failing transient node (`failing`) lying below s's edge cuts between its
+  // point cuts; else nothing is done and false returned.
+  bool flip_in_place(std::size_t s, const std::set<std::size_t>& failing, Batch& b);
   // The subtrees to replay for a failing certificate (see above).
   std::vector<std::size_t> roots(const Entry& e) const;
   // The topmost of `top` and its ancestors whose cut `at` meets at now (a

@@ -11,8 +11,10 @@
 // would make (proofs/segment-local-update.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -52,6 +54,13 @@ std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& nod
 // The arrivals of the segment of rank r in a log (a range: a log is in rank order).
 std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
                                                std::size_t r);
+
+// The parts of walk a that a cut through x sends below or left ([0]) and
+// above or right ([1]), given the sides of the part's two ends (0: on the
+// cut, taking the other end's side): the piece (from, x) goes to from's
+// side and (x, to) to to's side. Each end is compared on its own, never one
+// end with the other: the walk is the same whichever end is left.
+std::array<std::optional<Arrival>, 2> split_walk(const Arrival& a, int at_from, int at_to, const Site_point& x);
 
 // The crossings with an intersection cut in the subtree of v, sorted, each once.
 std::vector<Site_point> crossings_below(const Cylindrical_bsp& bsp, std::size_t v);
