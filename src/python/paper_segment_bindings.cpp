@@ -39,6 +39,8 @@ public:
     d["certificates"] = b.certificates;
     d["replays"] = b.replays;
     d["nodes_rebuilt"] = b.nodes_rebuilt;
+    d["flipped_in_place"] = b.flipped_in_place;
+    d["nodes_edited"] = b.nodes_edited;
     d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(run_.tree().text());
     batches_.push_back(d);
@@ -91,7 +93,7 @@ void bind_paper_segments(py::module_& m) {
            py::arg("events") = 100, py::arg("validate") = true, py::arg("until") = py::none())
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
-           "replays, nodes_rebuilt, update_seconds, structure_hash), or None when nothing fails any more,\n"
+           "replays, nodes_rebuilt, flipped_in_place, nodes_edited, update_seconds, structure_hash), or None when nothing fails any more,\n"
            "`events` failures were processed, or the next batch is after `until`.")
       .def_property_readonly("events", &Paper_segments::events, "The batches processed so far.")
       .def_property_readonly("now", &Paper_segments::now)

@@ -65,7 +65,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     const Bsp_node& m = tree_.nodes[f.m];
     if (m.kind != Cut_kind::edge || m.segment != s) return false;
     if (cut_rank(tree_.nodes[f.o1], rank) <= r || cut_rank(tree_.nodes[f.o2], rank) <= r) return false;
-    if (above_ties(v, n.point) != v || above_ties(v, p2.point) != v) return false;
+    if (above_ties(v, n.point, false) != v || above_ties(v, p2.point, false) != v) return false;
     const std::vector<Arrival>& log = log_.at[v];
     const auto own = std::find_if(log.begin(), log.end(), [&](const Arrival& a) {
       return !walks(a) && a.segment == s && a.a == n.point;

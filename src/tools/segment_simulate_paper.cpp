@@ -29,7 +29,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   std::vector<Run::Batch> batches;
   const std::string stopped = run_batches(run, k, o, batches);
   std::size_t failures = 0, changed = 0, simultaneous = 0;
-  std::size_t replays = 0;
+  std::size_t replays = 0, flipped = 0;
   std::array<std::size_t, 3> by_kind{};
   std::vector<double> ms, made;
   for (const Run::Batch& b : batches) {
@@ -37,6 +37,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
     replays += b.replays;
+    flipped += b.flipped_in_place > 0;
     for (const auto& id : b.failing) ++by_kind[static_cast<std::size_t>(id.kind)];
     ms.push_back(b.update_seconds * 1e3);
     made.push_back(static_cast<double>(b.nodes_rebuilt));
@@ -56,7 +57,8 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", run.certificates()},
               {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
                              {"max", decimal(fixed(max, 3))}}},
-              {"nodes_rebuilt_median", median(made)}, {"replays", replays}};
+              {"nodes_rebuilt_median", median(made)}, {"replays", replays},
+              {"flips_in_place", flipped}};
     if (o.list) {
       Json list = Json::array();
       for (const auto& b : batches) {
@@ -65,6 +67,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
                         {"failing", failing}, {"changed", b.changed}, {"certificates", b.certificates},
                         {"replays", b.replays}, {"nodes_rebuilt", b.nodes_rebuilt},
+                        {"flipped_in_place", b.flipped_in_place}, {"nodes_edited", b.nodes_edited},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
       j["batch_list"] = list;
@@ -88,7 +91,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << run.certificates()
               << " certificates\nupdate (ms):   mean " << fixed(mean, 3) << ", median " << fixed(median(ms), 3)
               << ", max " << fixed(max, 3) << "\nnodes made:    median " << median(made) << " a batch (" << replays
-              << " subtrees replayed)\n";
+              << " subtrees replayed, " << flipped << " flips done in place)\n";
   }
   for (const auto& f : run.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";
   return run.validation_failures().empty() ? 0 : 1;

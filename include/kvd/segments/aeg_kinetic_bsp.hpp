@@ -167,7 +167,9 @@ private:
   // perturbation): a change at `at` may cross that cut, as where a crossing
   // born at an endpoint lies on the other side of a wall with the same
   // abscissa.
-  std::size_t above_ties(std::size_t top, const Site_point& at) const;
+  // With `identities` false, a sign zero by identity (`at` a crossing on
+  // the cut's segment, for good) is no tie.
+  std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
   // Replays the subtrees of `roots` (none below another) and makes their
   // certificates again; whether the tree changed.
   bool replay(const std::vector<std::size_t>& roots, Batch& b);
