@@ -325,10 +325,10 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
                           k_.to_string(mid));
   }
   const auto start = std::chrono::steady_clock::now();
-  // The failing certificates, and the subtrees they name (none below
-  // another), whose ties are read at the batch's instant.
+  // The failing certificates.
   now_ = b.time;
-  std::set<std::size_t> named, failing_transient;
+  std::vector<Entry> entries;
+  std::set<std::size_t> failing_transient;
   std::vector<std::size_t> turning;
   while (!queue_.empty() && (stale(queue_.top()) || k_.compare(queue_.top().time, b.time) == 0)) {
     const Entry e = queue_.top();
@@ -338,19 +338,23 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
                            : e.kind == Aeg_certificate_kind::endpoint ? endpoint_[e.index]
                                                                       : flip_[e.index];
     b.failing.push_back(c.id);
-    for (const std::size_t r : roots(e)) named.insert(r);
+    entries.push_back(e);
     // A failing certificate is made again, not kept.
     if (e.kind == Aeg_certificate_kind::flip) turning.push_back(e.index);
     else if (e.kind == Aeg_certificate_kind::endpoint) failing_endpoints_.insert(e.index);
-    else {
-      transient_.erase(e.index);
-      failing_transient.insert(e.index);
-    }
+    else failing_transient.insert(e.index);
   }
   std::sort(b.failing.begin(), b.failing.end(), before);
   if (turning.size() == 1 && failing_endpoints_.empty() && flip_in_place(turning.front(), failing_transient, b)) {
     b.changed = true;
   } else {
+    // The subtrees the failing certificates name, none below another, their
+    // ties read at the batch's instant (signs that vanish there cost most:
+    // they are why a flip done in place does not read them).
+    std::set<std::size_t> named;
+    for (const Entry& e : entries)
+      for (const std::size_t r : roots(e)) named.insert(r);
+    for (const std::size_t v : failing_transient) transient_.erase(v);
     std::vector<std::size_t> top;
     for (const std::size_t r : named) {
       bool nested = false;
