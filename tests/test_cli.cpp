@@ -613,6 +613,15 @@ TEST_CASE("kvd simulate --certificates paper runs a segment scene on the paper's
   // A flip fails the segment's certificate and the cell between its endpoints.
   CHECK(run("simulate " + dir + "rotating-10.json --certificates paper --list --events 2").out.find(
             "transient between s1.0 and s1.1; flip s1; tree changed") != std::string::npos);
+  // Every flip of rotating-10.json is a lone one, done in place.
+  const Run rotating = run("simulate " + dir + "rotating-10.json --certificates paper --json");
+  REQUIRE(rotating.status == 0);
+  const std::size_t flip_at = rotating.out.find("\"flip\": "), in_place_at = rotating.out.find("\"flips_in_place\": ");
+  REQUIRE(flip_at != std::string::npos);
+  REQUIRE(in_place_at != std::string::npos);
+  const int flips = std::stoi(rotating.out.substr(flip_at + 8)), in_place = std::stoi(rotating.out.substr(in_place_at + 18));
+  CHECK(flips > 0);
+  CHECK(in_place == flips);
   // Up to t = 1/4 on 100 random segments, both runs change the tree in the same batches.
   const auto field = [](const std::string& out, const std::string& name) {
     const std::size_t at = out.find("\"" + name + "\": ");
