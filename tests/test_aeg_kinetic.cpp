@@ -178,13 +178,14 @@ TEST_CASE("the paper's certificates on small integer scenes", "[segments][aeg]")
 // Section 3.1.4's flip, done in place. s0 turns through vertical at t = 1
 // about (10, 0), under s3 and crossed by the later s1 and s2; s4 lies beside
 // it. Alone, the flip is done in place: the same tree and log as the run
-// keeping every sign and a fresh build. Three flips that meet another event
+// keeping every sign and a fresh build. Four flips that meet another event
 // at their instant are replayed instead; done in place, each would leave a
 // wrong tree:
-// - s2's crossing with s1 reaches s0 at t = 1 from outside the strip between
-//   s0's point cuts and stays beside s0.0's wall (x(s1 x s2) - x(s0.0) =
-//   -(t - 1)^2): three segments concurrent, seen only at a corner of a cell
-//   between s0's cuts;
+// - s2's crossing with s1 comes up to s0.0's abscissa at t = 1, on s0, and
+//   turns back (x(s1 x s2) - x(s0.0) = -(t - 1)^2): three segments
+//   concurrent, and the crossing lies between s0's cuts just after;
+// - so does an endpoint of a later segment below s0; no certificate fails
+//   for either;
 // - far away, the crossing of s7 and s8 passes s5.1's wall: only transient
 //   certificates outside the flip's subtrees fail with it;
 // - s6 passes over s5.1, as in the first test: only an endpoint certificate
@@ -204,6 +205,11 @@ TEST_CASE("a lone flip is done in place, and a flip meeting another event is rep
   CHECK(flips("lone", {s0, s1, s2, s3, s4}, {3, 0, 1, 2, 4}) == 1);
   const QPoly x0({mpq_class(7), mpq_class(3), mpq_class(-1)}), x1({mpq_class(9), mpq_class(3), mpq_class(-1)});
   CHECK(flips("tangent", {s0, fixed(5, 0, 15, 0), moving(x0, linear(-3, 0), x1, linear(3, 0)), s3}, {3, 0, 1, 2}) == 0);
+  // s5.1 comes up to s0.0's abscissa at t = 1 from the left without
+  // crossing it (x(s5.1) - x(s0.0) = -(t - 1)^2), below s0: it lies in the
+  // strip between s0's cuts just after, and no certificate fails for it.
+  const QPoly q0({mpq_class(6), mpq_class(3), mpq_class(-1)}), q1({mpq_class(8), mpq_class(3), mpq_class(-1)});
+  CHECK(flips("touching beside", {s0, s1, s2, s3, s4, moving(q0, linear(-3, 0), q1, linear(-3, 0))}, {3, 0, 1, 2, 4, 5}) == 0);
   const auto s5 = fixed(27, 4, 34, 4);
   CHECK(flips("crossing", {s0, s1, s2, s3, s4, s5, fixed(29, 3, 39, 3), fixed(28, -3, 40, 1),
                            moving(linear(30, 1), linear(-10, 0), linear(35, 1), linear(5, 0))},

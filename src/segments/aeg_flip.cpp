@@ -24,6 +24,22 @@ struct Flip_site {
 
 std::optional<Site_point>& wall(Cell& c, int side) { return side ? c.right : c.left; }
 
+// Visits the nodes of `top`'s subtree whose cell has its wall on `side` at
+// w, top down; `visit` may move the wall of the node it is given.
+template <class Visit>
+void along_wall(Cylindrical_bsp& t, std::size_t top, int side, const Site_point& w, const Visit& visit) {
+  std::vector<std::size_t> stack{top};
+  while (!stack.empty()) {
+    const std::size_t x = stack.back();
+    stack.pop_back();
+    Bsp_node& q = t.nodes[x];
+    if (wall(q.cell, side) != w) continue;
+    if (q.kind != Cut_kind::leaf)
+      for (const std::int32_t c : q.child) stack.push_back(static_cast<std::size_t>(c));
+    visit(x);
+  }
+}
+
 bool walks(const Arrival& a) { return a.kind == Arrival::Kind::crossings || a.kind == Arrival::Kind::edges; }
 
 std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
@@ -36,14 +52,25 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
   // B_{i-1} the segment, about to be vertical, runs from its floor (or an
   // endpoint) to its roof (or the other): two point cuts, its edge cut
   // between them, and below that only the cuts of later segments crossing
-  // it. Anything else there, or a sign other than their x order that
-  // vanishes now, is another event at this instant.
+  // it. Another event at this instant shows as another shape, a point cut
+  // beside the strip or a cut above v meeting the strip's walls now, or a
+  // failing certificate of an endpoint or outside the strips (the caller's
+  // and the last check).
   const std::vector<std::size_t>& rank = scene_.rank;
   const std::size_t r = rank[s];
   std::vector<Flip_site> sites;
   std::set<std::size_t> middle;
-  const auto lone_corner = [&](const Site_point& w, const std::optional<std::uint32_t>& edge) {
-    return !edge || w.on(*edge) || pred_.side(w, *edge, now_).rule == Segment_rule::value;
+  // Whether a point beside the strip has its abscissa meet the wall's (at
+  // w) now, as one can without crossing it: it lies inside the strip just
+  // after. A point between it and the wall would too, so the nodes along
+  // the wall show it.
+  const auto touching = [&](std::size_t top, int side, const Site_point& w) {
+    bool found = false;
+    along_wall(tree_, top, side, w, [&](std::size_t x) {
+      const Bsp_node& q = tree_.nodes[x];
+      found = found || (point_cut(q) && pred_.compare_x(q.point, w, now_).rule != Segment_rule::value);
+    });
+    return found;
   };
   for (const std::size_t v : tops(s)) {
     Flip_site f;
@@ -65,6 +92,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     const Bsp_node& m = tree_.nodes[f.m];
     if (m.kind != Cut_kind::edge || m.segment != s) return false;
     if (cut_rank(tree_.nodes[f.o1], rank) <= r || cut_rank(tree_.nodes[f.o2], rank) <= r) return false;
+    if (touching(f.o1, d, n.point) || touching(f.o2, 1 - d, p2.point)) return false;
     if (above_ties(v, n.point, false) != v || above_ties(v, p2.point, false) != v) return false;
     const std::vector<Arrival>& log = log_.at[v];
     const auto own = std::find_if(log.begin(), log.end(), [&](const Arrival& a) {
@@ -75,9 +103,6 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     for (const std::size_t x : tree_.preorder(f.m)) {
       const Bsp_node& q = tree_.nodes[x];
       if (point_cut(q) && (q.kind != Cut_kind::intersection || !q.point.on(s))) return false;
-      // A floor or roof through a wall's point: three segments concurrent.
-      for (const auto& w : {q.cell.left, q.cell.right})
-        if (w && !(lone_corner(*w, q.cell.floor) && lone_corner(*w, q.cell.roof))) return false;
       f.middle.push_back(x);
       middle.insert(x);
     }
@@ -92,22 +117,15 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
   // `from` and is now at `to`: their cells, and the ends of the walks they
   // logged there.
   const auto rewall = [&](std::size_t top, int side, const Site_point& from, const Site_point& to) {
-    std::vector<std::size_t> stack{top};
-    while (!stack.empty()) {
-      const std::size_t x = stack.back();
-      stack.pop_back();
-      Bsp_node& q = tree_.nodes[x];
-      if (wall(q.cell, side) != from) continue;
-      wall(q.cell, side) = to;
+    along_wall(tree_, top, side, from, [&](std::size_t x) {
+      wall(tree_.nodes[x].cell, side) = to;
       for (Arrival& a : log_.at[x])
         if (walks(a)) {
           if (a.a == from) a.a = to;
           if (a.b == from) a.b = to;
         }
       edited.push_back(x);
-      if (q.kind != Cut_kind::leaf)
-        for (const std::int32_t c : q.child) stack.push_back(static_cast<std::size_t>(c));
-    }
+    });
   };
   for (const Flip_site& f : sites) {
     const int d = f.d;
@@ -136,6 +154,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     tree_.nodes[f.o2].parent = static_cast<std::int32_t>(f.v);
     q2.cell = v.cell;
     wall(q2.cell, d) = p1;
+    edited.push_back(f.v);
     edited.push_back(f.p2);
     rewall(f.o1, d, p1, p2);
     rewall(f.o2, 1 - d, p2, p1);
