@@ -19,7 +19,6 @@ struct Flip_site {
   std::size_t v = 0, p2 = 0, m = 0, o1 = 0, o2 = 0;
   int d = 0;
   std::size_t own = 0;  // the place of v's own arrival in v's log
-  std::vector<std::size_t> middle;  // m's subtree
 };
 
 std::optional<Site_point>& wall(Cell& c, int side) { return side ? c.right : c.left; }
@@ -59,7 +58,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
   const std::vector<std::size_t>& rank = scene_.rank;
   const std::size_t r = rank[s];
   std::vector<Flip_site> sites;
-  std::set<std::size_t> middle;
+  std::set<std::size_t> middle;  // the subtrees of the sites' m
   // Whether a point beside the strip has its abscissa meet the wall's (at
   // w) now, as one can without crossing it: it lies inside the strip just
   // after. A point between it and the wall would too, so the nodes along
@@ -103,7 +102,6 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     for (const std::size_t x : tree_.preorder(f.m)) {
       const Bsp_node& q = tree_.nodes[x];
       if (point_cut(q) && (q.kind != Cut_kind::intersection || !q.point.on(s))) return false;
-      f.middle.push_back(x);
       middle.insert(x);
     }
     sites.push_back(std::move(f));
@@ -158,16 +156,16 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     edited.push_back(f.p2);
     rewall(f.o1, d, p1, p2);
     rewall(f.o2, 1 - d, p2, p1);
-    // Below m, mirrored: walls, the sides of the cuts through s, and the
-    // direction in which the later segments' walks cross each cell.
-    for (const std::size_t x : f.middle) {
-      Bsp_node& q = tree_.nodes[x];
-      std::swap(q.cell.left, q.cell.right);
-      if (point_cut(q)) std::swap(q.child[0], q.child[1]);
-      for (Arrival& a : log_.at[x])
-        if (walks(a) && a.segment != s) std::swap(a.a, a.b);
-      edited.push_back(x);
-    }
+  }
+  // Below each m, mirrored: walls, the sides of the cuts through s, and the
+  // direction in which the later segments' walks cross each cell.
+  for (const std::size_t x : middle) {
+    Bsp_node& q = tree_.nodes[x];
+    std::swap(q.cell.left, q.cell.right);
+    if (point_cut(q)) std::swap(q.child[0], q.child[1]);
+    for (Arrival& a : log_.at[x])
+      if (walks(a) && a.segment != s) std::swap(a.a, a.b);
+    edited.push_back(x);
   }
   // Certificates: the transient nodes with a new cell, the endpoints beside
   // a leaf with one, and s's own, whose far side is now the other one.
@@ -177,13 +175,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     std::vector<std::size_t>& near = beside_[leaf_[e]];
     near.erase(std::remove(near.begin(), near.end(), e), near.end());
   }
-  for (const std::size_t x : edited) {
-    const auto it = beside_.find(x);
-    if (it == beside_.end()) continue;
-    const std::vector<std::size_t> endpoints = std::move(it->second);
-    beside_.erase(it);
-    for (const std::size_t e : endpoints) make_endpoint(e, x);
-  }
+  for (const std::size_t x : edited) remake_beside(x, x);
   for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
   b.flipped_in_place = sites.size();
   b.nodes_edited = edited.size();

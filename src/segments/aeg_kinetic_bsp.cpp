@@ -132,6 +132,15 @@ void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from) {
 }
 
 template <class K>
+void Aeg_kinetic_bsp<K>::remake_beside(std::size_t n, std::size_t from) {
+  const auto it = beside_.find(n);
+  if (it == beside_.end()) return;
+  const std::vector<std::size_t> endpoints = std::move(it->second);
+  beside_.erase(it);
+  for (const std::size_t e : endpoints) make_endpoint(e, from);
+}
+
+template <class K>
 void Aeg_kinetic_bsp<K>::make_flip(std::size_t s) {
   Certificate& cert = flip_[s];
   cert.id = {Aeg_certificate_kind::flip, s, {}};
@@ -275,13 +284,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, Batch& b)
       else if (!transient_.count(u)) make_transient(u);
       c = u;
     }
-    for (const std::size_t n : old) {
-      const auto it = beside_.find(n);
-      if (it == beside_.end()) continue;
-      const std::vector<std::size_t> endpoints = std::move(it->second);
-      beside_.erase(it);
-      for (const std::size_t e : endpoints) make_endpoint(e, v);
-    }
+    for (const std::size_t n : old) remake_beside(n, v);
   }
   spare_.clear();  // cells gone with their nodes
   b.nodes_rebuilt += builder.added();

@@ -151,6 +151,9 @@ private:
   // An endpoint's, its leaf found from `from` (an ancestor of it): kept when
   // its floor and roof are the same and it is not failing now, else made.
   void make_endpoint(std::size_t e, std::size_t from = 0);
+  // The endpoints beside node n, their leaves found again from `from`
+  // (an ancestor of them, n itself when it stays a leaf).
+  void remake_beside(std::size_t n, std::size_t from);
   void make_flip(std::size_t s);
   // The nodes whose cut the insertion of segment s made, none of them below
   // another: s's first cut in each leaf of B_{i-1} that s meets, found down
