@@ -8,6 +8,7 @@
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
+#include "kvd/detail/segments/subtree_fit.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 
@@ -170,6 +171,24 @@ void Kinetic_segment_bsp<K>::unrecord(const Segment_certificate_key& key, std::i
   listed.erase(std::remove(listed.begin(), listed.end(), key), listed.end());
 }
 
+template <class K>
+void Kinetic_segment_bsp<K>::move_keys(std::size_t from, std::size_t to) {
+  if (from >= node_keys_.size()) return;
+  if (node_keys_.size() <= to) node_keys_.resize(to + 1);
+  const auto was = static_cast<std::int32_t>(from), is = static_cast<std::int32_t>(to);
+  // A node's list may name a key dropped since through by_crossing_: it
+  // is in force no more, or no more at `from`, and nothing names it there.
+  for (const Segment_certificate_key& key : node_keys_[from]) {
+    if (const auto it = certs_.find(key); it != certs_.end())
+      std::replace(it->second.nodes.begin(), it->second.nodes.end(), was, is);
+    for (const Site_point& x : {key.p, key.q})
+      if (const auto at = by_crossing_.find(x); at != by_crossing_.end())
+        std::replace(at->second.begin(), at->second.end(), std::pair{key, was}, std::pair{key, is});
+  }
+  node_keys_[to] = std::move(node_keys_[from]);
+  node_keys_[from].clear();
+}
+
 // The node's certificates lose it; those decided nowhere else go.
 template <class K>
 void Kinetic_segment_bsp<K>::forget(std::size_t node) {
@@ -190,25 +209,26 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   std::vector<std::vector<Arrival>> arrivals;
   std::vector<std::vector<std::size_t>> spare;
   std::vector<Site_point> was, is;
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
+                     {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); },
+                      [](std::size_t) {}});
   for (const auto& [v, rank] : roots) {
     before.push_back(tree_.text(v));
     arrivals.push_back(log_.at[v]);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
-    if (rank) spare.push_back(set_aside(v, *rank, dirty));
+    if (rank) spare.push_back(fit.set_aside(v, *rank));
     else {
       spare.emplace_back();
-      discard(v, false);
+      fit.discard(v, false);
     }
   }
-  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   bool changed = false;
-  std::vector<std::size_t> tops;  // nodes made above cells taken whole, whose logs may name a crossing gone
   for (std::size_t k = 0; k < roots.size(); ++k) {
     const std::size_t v = roots[k].node;
-    if (roots[k].rank) remake_frontier_node(builder, v, *roots[k].rank, arrivals[k], spare[k], dirty, tops);
+    if (roots[k].rank) fit.remake(v, *roots[k].rank, arrivals[k], std::move(spare[k]));
     else builder.replay(v, arrivals[k]);
-    for (const std::size_t o : spare[k]) discard(o, true);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     is.insert(is.end(), x.begin(), x.end());
     changed = changed || tree_.text(v) != before[k];
@@ -230,7 +250,8 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   }
   // And its location, logged above the roots, too (each ancestor once),
   // and above the cells taken whole.
-  std::set<std::size_t> above(tops.begin(), tops.end());
+  // (tops: nodes made above cells taken whole, whose logs may name a crossing gone)
+  std::set<std::size_t> above(fit.tops().begin(), fit.tops().end());
   for (const auto& [v, rank] : roots) {
     if (gone.empty()) break;
     std::int32_t a = tree_.nodes[v].parent;

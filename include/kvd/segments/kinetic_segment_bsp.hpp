@@ -20,7 +20,7 @@
 // again from u down to the frontier (the first nodes of cuts of s or later
 // segments: the leaves of B_{s-1} under u), and only the frontier nodes whose
 // arrivals changed are made again, keeping the old subtrees below s's cuts
-// whose arrivals did not change (remake_frontier_node); otherwise it replays
+// whose arrivals did not change (Subtree_fit::remake); otherwise it replays
 // u's subtree. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
@@ -203,40 +203,8 @@ private:
   // Replays the subtrees of the roots (none below another; `failing`: every
   // failing node, sorted); whether one's text changed.
   bool replay(const std::vector<Replay_root>& roots, const std::vector<std::int32_t>& failing, std::size_t& added);
-  // A frontier node v made again (proofs/segment-local-update.md, "Cells
-  // kept"): the cuts of the segment of rank r first, from its steps in v's
-  // log; then the later segments' steps decided down to the cells those cuts
-  // make; a cell whose arrivals are those of an old subtree set aside
-  // (`spare`, from set_aside) and not `dirty` takes that subtree whole, and
-  // the others are replayed. `tops` gets v and the new cuts of rank r.
-  void remake_frontier_node(Bsp_builder<K>& builder, std::size_t v, std::size_t r, const std::vector<Arrival>& arrivals,
-                            std::vector<std::size_t>& spare, std::set<std::size_t>& dirty,
-                            std::vector<std::size_t>& tops);
-  // After v's cuts of rank r are made from the arrivals before index `to`:
-  // the arrivals from `to` on (later segments), logged at v and decided
-  // down to the cells those cuts make; returns each cell with its arrivals.
-  std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells_below(Bsp_builder<K>& builder, std::size_t v,
-                                                                        std::size_t r,
-                                                                        const std::vector<Arrival>& arrivals,
-                                                                        std::size_t to, std::vector<std::size_t>& tops);
-  // A new leaf `cell` made with its arrivals `steps`: an old subtree of
-  // `spare` with the same arrivals, not dirty, moves there; else the first
-  // segment's cuts are made, and when an old subtree has the same cut on
-  // top its cells are fitted to the new cells in turn; else it is replayed.
-  void fit(Bsp_builder<K>& builder, std::size_t cell, const std::vector<Arrival>& steps,
-           std::vector<std::size_t>& spare, std::set<std::size_t>& dirty, std::vector<std::size_t>& tops);
-  // Before that: the cuts of rank r below v are forgotten and their slots
-  // freed, v's included; the first nodes below them of a later cut, or
-  // leaves, are set aside whole (v's content moved to a free slot when v is
-  // one, and marked dirty when v is). Returns those set aside.
-  std::vector<std::size_t> set_aside(std::size_t v, std::size_t r, std::set<std::size_t>& dirty);
-  // Node `from`'s cut, children, log and certificate entries move to slot
-  // `to`, which keeps its parent and cell.
-  void move_node(std::size_t from, std::size_t to);
-  // The cells below v made again from v's, down to those that stay.
-  void refresh_cells(std::size_t v);
-  // The subtree of v forgotten and its slots freed (v's too when `with_root`).
-  void discard(std::size_t v, bool with_root);
+  // A node's certificate keys move to another slot (Subtree_fit).
+  void move_keys(std::size_t from, std::size_t to);
   void forget(std::size_t node);
   // The key's decision at the node goes (drop), and the node's entry of it.
   void unrecord(const Segment_certificate_key& key, std::int32_t node);

@@ -1,0 +1,74 @@
+// A node of the cylindrical BSP made again with the old subtrees below it
+// kept where their arrivals did not change (proofs/segment-local-update.md,
+// "Cells kept"). Both kinetic runs use it: Kinetic_segment_bsp for its
+// frontier nodes, Aeg_kinetic_bsp for the subtrees its failing certificates
+// name. Each run keeps its own certificates by node slot, so it is told
+// when a node's are to go (forget) or move to another slot (moved), and
+// which nodes kept whole got a new cell (recelled).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "kvd/detail/segments/bsp_builder.hpp"
+#include "kvd/segments/segment_scene.hpp"
+
+namespace kvd::segments {
+
+struct Subtree_fit_hooks {
+  std::function<void(std::size_t)> forget;                    // the node's certificates go
+  std::function<void(std::size_t, std::size_t)> moved;        // a node's certificates move from one slot to another
+  std::function<void(std::size_t)> recelled;                  // a node kept got a new cell
+};
+
+template <class K>
+class Subtree_fit {
+public:
+  // `dirty`: nodes holding a change (a failing certificate below them): a
+  // subtree of one is never taken whole.
+  Subtree_fit(Cylindrical_bsp& tree, Build_log& log, const Segment_scene& scene, Bsp_builder<K>& builder,
+              std::set<std::size_t>& dirty, Subtree_fit_hooks hooks);
+
+  // Before a remake: the cuts of rank r below v are forgotten and their
+  // slots freed, v's included; the first nodes below them of a later cut,
+  // or leaves, are set aside whole (v's content moved to a free slot when v
+  // is one, and marked dirty when v is). Returns those set aside.
+  std::vector<std::size_t> set_aside(std::size_t v, std::size_t r);
+  // Node v made again: the cuts of the segment of rank r first, from its
+  // steps in `arrivals` (v's log before); then the later segments' steps
+  // decided down to the cells those cuts make; a cell whose arrivals are
+  // those of an old subtree of `spare` not dirty takes that subtree whole,
+  // one whose first cut is an old subtree's top is fitted to it cell by
+  // cell, and the others are replayed. The spares left are discarded.
+  void remake(std::size_t v, std::size_t r, const std::vector<Arrival>& arrivals, std::vector<std::size_t> spare);
+  // The subtree of v forgotten and its slots freed (v's too when `with_root`).
+  void discard(std::size_t v, bool with_root);
+  // The nodes made with cuts of the ranks remade, whose logs may name a
+  // crossing gone, and the roots of the subtrees taken whole.
+  const std::vector<std::size_t>& tops() const { return tops_; }
+  const std::vector<std::size_t>& kept() const { return kept_; }
+
+private:
+  std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells_below(std::size_t v, std::size_t r,
+                                                                        const std::vector<Arrival>& arrivals,
+                                                                        std::size_t to);
+  void fit(std::size_t cell, const std::vector<Arrival>& steps, std::vector<std::size_t>& spare);
+  // Node `from`'s cut, children and log move to slot `to`, which keeps its
+  // parent and cell.
+  void move_node(std::size_t from, std::size_t to);
+  // The cells below v made again from v's, down to those that stay.
+  void refresh_cells(std::size_t v);
+
+  Cylindrical_bsp& tree_;
+  Build_log& log_;
+  const Segment_scene& scene_;
+  Bsp_builder<K>& builder_;
+  std::set<std::size_t>& dirty_;
+  Subtree_fit_hooks hooks_;
+  std::vector<std::size_t> tops_, kept_;
+};
+
+}  // namespace kvd::segments
