@@ -178,7 +178,8 @@ TEST_CASE("the paper's certificates on small integer scenes", "[segments][aeg]")
 // Section 3.1.4's flip, done in place. s0 turns through vertical at t = 1
 // about (10, 0), under s3 and crossed by the later s1 and s2; s4 lies beside
 // it. Alone, the flip is done in place: the same tree and log as the run
-// keeping every sign and a fresh build. Four flips that meet another event
+// keeping every sign and a fresh build; so are two flips at one instant
+// whose leaves of B_{i-1} lie apart, not when one lies below the other. Four flips that meet another event
 // at their instant are replayed instead; done in place, each would leave a
 // wrong tree:
 // - s2's crossing with s1 comes up to s0.0's abscissa at t = 1, on s0, and
@@ -203,6 +204,13 @@ TEST_CASE("a lone flip is done in place, and a flip meeting another event is rep
     return c.flipped;
   };
   CHECK(flips("lone", {s0, s1, s2, s3, s4}, {3, 0, 1, 2, 4}) == 1);
+  // A second segment turning at t = 1 about (50, 0), right of s3.1's wall:
+  // the leaves of B_{i-1} of the two flips lie apart, and both are done in
+  // place in one batch. With s0 first, s0's leaf is the whole plane, the
+  // other's lies below its cut, and the batch is replayed.
+  const auto t0 = moving(linear(49, 1), linear(-2, 0), linear(51, -1), linear(2, 0));
+  CHECK(flips("two apart", {s0, s1, s2, s3, s4, t0}, {3, 0, 1, 2, 4, 5}) == 1);
+  CHECK(flips("two, one below the other", {s0, s1, s2, s3, s4, t0}, {0, 3, 1, 2, 4, 5}) == 0);
   const QPoly x0({mpq_class(7), mpq_class(3), mpq_class(-1)}), x1({mpq_class(9), mpq_class(3), mpq_class(-1)});
   CHECK(flips("tangent", {s0, fixed(5, 0, 15, 0), moving(x0, linear(-3, 0), x1, linear(3, 0)), s3}, {3, 0, 1, 2}) == 0);
   // s5.1 comes up to s0.0's abscissa at t = 1 from the left without

@@ -2,6 +2,7 @@
 // section 3.1.4; kvd/segments/aeg_kinetic_bsp.hpp, and
 // proofs/segment-certificates.md, "Flips in place").
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include "kvd/kernel/kernel.hpp"
@@ -46,8 +47,9 @@ std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>
 }  // namespace
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t>& failing, Batch& b) {
-  // Whether it is a lone flip, with nothing changed yet. In each leaf of
+bool Aeg_kinetic_bsp<K>::flip_in_place(const std::vector<std::size_t>& turning, const std::set<std::size_t>& failing,
+                                       Batch& b) {
+  // Whether they are lone flips, with nothing changed yet. In each leaf of
   // B_{i-1} the segment, about to be vertical, runs from its floor (or an
   // endpoint) to its roof (or the other): two point cuts, its edge cut
   // between them, and below that only the cuts of later segments crossing
@@ -56,9 +58,8 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
   // failing certificate of an endpoint or outside the strips (the caller's
   // and the last check).
   const std::vector<std::size_t>& rank = scene_.rank;
-  const std::size_t r = rank[s];
   std::vector<Flip_site> sites;
-  std::set<std::size_t> middle;  // the subtrees of the sites' m
+  std::map<std::size_t, std::size_t> middle;  // the subtrees of the sites' m, each with its flipping segment
   // Whether a point beside the strip has its abscissa meet the wall's (at
   // w) now, as one can without crossing it: it lies inside the strip just
   // after. A point between it and the wall would too, so the nodes along
@@ -71,44 +72,55 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     });
     return found;
   };
-  for (const std::size_t v : tops(s)) {
-    Flip_site f;
-    f.v = v;
-    const Bsp_node& n = tree_.nodes[v];
-    if (!point_cut(n)) return false;
-    f.d = -1;
-    for (const int side : {0, 1}) {
-      const Bsp_node& c = tree_.nodes[child(n, side)];
-      if (point_cut(c) && cut_rank(c, rank) == r) f.d = side;
+  for (const std::size_t s : turning) {
+    for (const std::size_t v : tops(s)) {
+      const std::size_t r = rank[s];
+      Flip_site f;
+      f.v = v;
+      const Bsp_node& n = tree_.nodes[v];
+      if (!point_cut(n)) return false;
+      f.d = -1;
+      for (const int side : {0, 1}) {
+        const Bsp_node& c = tree_.nodes[child(n, side)];
+        if (point_cut(c) && cut_rank(c, rank) == r) f.d = side;
+      }
+      if (f.d < 0) return false;
+      const int d = f.d;
+      f.p2 = child(n, d);
+      f.o1 = child(n, 1 - d);
+      const Bsp_node& p2 = tree_.nodes[f.p2];
+      f.m = child(p2, 1 - d);
+      f.o2 = child(p2, d);
+      const Bsp_node& m = tree_.nodes[f.m];
+      if (m.kind != Cut_kind::edge || m.segment != s) return false;
+      if (cut_rank(tree_.nodes[f.o1], rank) <= r || cut_rank(tree_.nodes[f.o2], rank) <= r) return false;
+      if (touching(f.o1, d, n.point) || touching(f.o2, 1 - d, p2.point)) return false;
+      if (above_ties(v, n.point, false) != v || above_ties(v, p2.point, false) != v) return false;
+      const std::vector<Arrival>& log = log_.at[v];
+      const auto own = std::find_if(log.begin(), log.end(), [&](const Arrival& a) {
+        return !walks(a) && a.segment == s && a.a == n.point;
+      });
+      if (own == log.end()) return false;
+      f.own = static_cast<std::size_t>(own - log.begin());
+      for (const std::size_t x : tree_.preorder(f.m)) {
+        const Bsp_node& q = tree_.nodes[x];
+        if (point_cut(q) && (q.kind != Cut_kind::intersection || !q.point.on(s))) return false;
+        middle.emplace(x, s);
+      }
+      sites.push_back(std::move(f));
     }
-    if (f.d < 0) return false;
-    const int d = f.d;
-    f.p2 = child(n, d);
-    f.o1 = child(n, 1 - d);
-    const Bsp_node& p2 = tree_.nodes[f.p2];
-    f.m = child(p2, 1 - d);
-    f.o2 = child(p2, d);
-    const Bsp_node& m = tree_.nodes[f.m];
-    if (m.kind != Cut_kind::edge || m.segment != s) return false;
-    if (cut_rank(tree_.nodes[f.o1], rank) <= r || cut_rank(tree_.nodes[f.o2], rank) <= r) return false;
-    if (touching(f.o1, d, n.point) || touching(f.o2, 1 - d, p2.point)) return false;
-    if (above_ties(v, n.point, false) != v || above_ties(v, p2.point, false) != v) return false;
-    const std::vector<Arrival>& log = log_.at[v];
-    const auto own = std::find_if(log.begin(), log.end(), [&](const Arrival& a) {
-      return !walks(a) && a.segment == s && a.a == n.point;
-    });
-    if (own == log.end()) return false;
-    f.own = static_cast<std::size_t>(own - log.begin());
-    for (const std::size_t x : tree_.preorder(f.m)) {
-      const Bsp_node& q = tree_.nodes[x];
-      if (point_cut(q) && (q.kind != Cut_kind::intersection || !q.point.on(s))) return false;
-      middle.insert(x);
-    }
-    sites.push_back(std::move(f));
   }
   if (sites.empty()) return false;
   for (const std::size_t t : failing)
     if (!middle.count(t)) return false;
+  // Flips at one instant are done one after the other where no site lies
+  // below another's v (two that cross lie one below the other): each edits
+  // only its v's subtree, which holds nothing of the others.
+  std::set<std::size_t> tops_of_sites;
+  for (const Flip_site& f : sites) tops_of_sites.insert(f.v);
+  for (const Flip_site& f : sites)
+    for (std::int32_t a = tree_.nodes[f.v].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+      if (tops_of_sites.count(static_cast<std::size_t>(a))) return false;
 
   std::vector<std::size_t> edited;
   // The nodes of `top`'s subtree along its wall on `side`, which was at
@@ -159,7 +171,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
   }
   // Below each m, mirrored: walls, the sides of the cuts through s, and the
   // direction in which the later segments' walks cross each cell.
-  for (const std::size_t x : middle) {
+  for (const auto& [x, s] : middle) {
     Bsp_node& q = tree_.nodes[x];
     std::swap(q.cell.left, q.cell.right);
     if (point_cut(q)) std::swap(q.child[0], q.child[1]);
@@ -168,20 +180,23 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(std::size_t s, const std::set<std::size_t
     edited.push_back(x);
   }
   // Certificates: the transient nodes with a new cell, the endpoints beside
-  // a leaf with one, and s's own, whose far side is now the other one.
+  // a leaf with one, and the segments' own, whose far side is now the other one.
   for (const std::size_t x : edited)
     if (transient_.count(x) || failing.count(x)) make_transient(x);
-  for (const std::size_t e : {2 * s, 2 * s + 1}) {
-    std::vector<std::size_t>& near = beside_[leaf_[e]];
-    near.erase(std::remove(near.begin(), near.end(), e), near.end());
-  }
+  for (const std::size_t s : turning)
+    for (const std::size_t e : {2 * s, 2 * s + 1}) {
+      std::vector<std::size_t>& near = beside_[leaf_[e]];
+      near.erase(std::remove(near.begin(), near.end(), e), near.end());
+    }
   for (const std::size_t x : edited) remake_beside(x, x);
-  for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
+  for (const std::size_t s : turning)
+    for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
   b.flipped_in_place = sites.size();
   b.nodes_edited = edited.size();
   return true;
 }
 
-template bool Aeg_kinetic_bsp<Exact_kernel>::flip_in_place(std::size_t, const std::set<std::size_t>&, Batch&);
+template bool Aeg_kinetic_bsp<Exact_kernel>::flip_in_place(const std::vector<std::size_t>&, const std::set<std::size_t>&,
+                                                           Batch&);
 
 }  // namespace kvd::segments

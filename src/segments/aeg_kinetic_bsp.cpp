@@ -348,7 +348,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
     else failing_transient.insert(e.index);
   }
   std::sort(b.failing.begin(), b.failing.end(), before);
-  if (turning.size() == 1 && failing_endpoints_.empty() && flip_in_place(turning.front(), failing_transient, b)) {
+  if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
   } else {
     // The subtrees the failing certificates name, none below another, their

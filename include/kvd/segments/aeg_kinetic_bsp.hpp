@@ -16,7 +16,8 @@
 //   (proofs/segment-certificates.md);
 // - segment: the x order of its two endpoints.
 //
-// A lone flip is handled in place, as section 3.1.4 does it: in each leaf of
+// A lone flip (or several at one instant, none in a leaf of B_{i-1} below
+// another's) is handled in place, as section 3.1.4 does it: in each leaf of
 // B_{i-1} that the flipping segment s_i meets, its second point cut moves to
 // the other side of its first, the subtrees beside them change places, and
 // below s_i's edge cut between them every intersection cut swaps its
@@ -159,10 +160,12 @@ private:
   // another: s's first cut in each leaf of B_{i-1} that s meets, found down
   // the nodes whose log holds an arrival of s.
   std::vector<std::size_t> tops(std::size_t s) const;
-  // Segment s's flip done in place (see above) when it is a lone one, every
-  // failing transient node (`failing`) lying below s's edge cuts between its
-  // point cuts; else nothing is done and false returned.
-  bool flip_in_place(std::size_t s, const std::set<std::size_t>& failing, Batch& b);
+  // The flips of the segments `turning` done in place (see above) when they
+  // are lone ones: every failing transient node (`failing`) lies below a
+  // turning segment's edge cuts between its point cuts, and no leaf of
+  // B_{i-1} that one meets lies below another's; else nothing is done and
+  // false returned.
+  bool flip_in_place(const std::vector<std::size_t>& turning, const std::set<std::size_t>& failing, Batch& b);
   // The subtrees to replay for a failing certificate (see above).
   std::vector<std::size_t> roots(const Entry& e) const;
   // The topmost of `top` and its ancestors whose cut `at` meets at now (a
