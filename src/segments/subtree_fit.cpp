@@ -100,7 +100,6 @@ void Subtree_fit<K>::fit(std::size_t cell, const std::vector<Arrival>& steps, st
   if (same != spare.end()) {
     move_node(*same, cell);
     refresh_cells(cell);
-    kept_.push_back(cell);
     return taken(same);
   }
   // Otherwise the cuts of the first segment that cuts the cell; when an old
@@ -164,7 +163,6 @@ void Subtree_fit<K>::refresh_cells(std::size_t v) {
       Bsp_node& child = tree_.nodes[static_cast<std::size_t>(node.child[side])];
       if (child.cell == c) continue;
       child.cell = c;
-      hooks_.recelled(static_cast<std::size_t>(node.child[side]));
       stack.push_back(static_cast<std::size_t>(node.child[side]));
     }
   }

@@ -1,10 +1,11 @@
 // A node of the cylindrical BSP made again with the old subtrees below it
 // kept where their arrivals did not change (proofs/segment-local-update.md,
-// "Cells kept"). Both kinetic runs use it: Kinetic_segment_bsp for its
-// frontier nodes, Aeg_kinetic_bsp for the subtrees its failing certificates
-// name. Each run keeps its own certificates by node slot, so it is told
-// when a node's are to go (forget) or move to another slot (moved), and
-// which nodes kept whole got a new cell (recelled).
+// "Cells kept"). Kinetic_segment_bsp uses it for its frontier nodes, whose
+// logs the frontier replay has just made again: it trusts the logged
+// crossings of later segments, so it holds only where no other segment's
+// steps changed, which the run on the paper's certificates cannot yet tell.
+// The run keeps its certificates by node slot, so it is told when a node's
+// are to go (forget) or move to another slot (moved).
 #pragma once
 
 #include <cstddef>
@@ -19,9 +20,8 @@
 namespace kvd::segments {
 
 struct Subtree_fit_hooks {
-  std::function<void(std::size_t)> forget;                    // the node's certificates go
-  std::function<void(std::size_t, std::size_t)> moved;        // a node's certificates move from one slot to another
-  std::function<void(std::size_t)> recelled;                  // a node kept got a new cell
+  std::function<void(std::size_t)> forget;              // the node's certificates go
+  std::function<void(std::size_t, std::size_t)> moved;  // a node's certificates move from one slot to another
 };
 
 template <class K>
@@ -46,10 +46,9 @@ public:
   void remake(std::size_t v, std::size_t r, const std::vector<Arrival>& arrivals, std::vector<std::size_t> spare);
   // The subtree of v forgotten and its slots freed (v's too when `with_root`).
   void discard(std::size_t v, bool with_root);
-  // The nodes made with cuts of the ranks remade, whose logs may name a
-  // crossing gone, and the roots of the subtrees taken whole.
+  // The nodes made above cells taken whole (with cuts of the ranks remade),
+  // whose logs may name a crossing gone.
   const std::vector<std::size_t>& tops() const { return tops_; }
-  const std::vector<std::size_t>& kept() const { return kept_; }
 
 private:
   std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells_below(std::size_t v, std::size_t r,
@@ -68,7 +67,7 @@ private:
   Bsp_builder<K>& builder_;
   std::set<std::size_t>& dirty_;
   Subtree_fit_hooks hooks_;
-  std::vector<std::size_t> tops_, kept_;
+  std::vector<std::size_t> tops_;
 };
 
 }  // namespace kvd::segments
