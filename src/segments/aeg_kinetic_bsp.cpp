@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "kvd/detail/kinetic/validator.hpp"
+#include "kvd/detail/segments/subtree_fit.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/segments/aeg_certificates.hpp"
@@ -153,7 +154,13 @@ bool Aeg_kinetic_bsp<K>::certify_below(std::size_t v) {
   bool points = point_cut(n);
   if (n.kind != Cut_kind::leaf)
     for (const std::int32_t c : n.child) points = certify_below(static_cast<std::size_t>(c)) || points;
-  if (!points && n.parent >= 0 && point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)])) make_transient(v);
+  // A node kept by an update keeps its certificate while its cell stays.
+  const auto it = transient_.find(v);
+  if (points || n.parent < 0 || !point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)])) {
+    if (it != transient_.end()) transient_.erase(it);
+  } else if (it == transient_.end() || !(it->second.id.cell == n.cell)) {
+    make_transient(v);
+  }
   return points;
 }
 
@@ -166,11 +173,8 @@ bool Aeg_kinetic_bsp<K>::points_below(std::size_t v) const {
 }
 
 template <class K>
-std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
-  // The cuts the certificate is about, and the node its path starts from.
-  std::vector<Site_point> points;
-  std::vector<std::size_t> segments;
-  std::size_t from = e.index;
+std::size_t Aeg_kinetic_bsp<K>::subjects(const Entry& e, std::vector<Site_point>& points,
+                                         std::vector<std::size_t>& segments) const {
   switch (e.kind) {
     case Aeg_certificate_kind::transient: {
       const Cell& c = transient_.at(e.index).id.cell;
@@ -178,27 +182,36 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
         if (w) points.push_back(*w);
       for (const auto& s : {c.floor, c.roof})
         if (s) segments.push_back(*s);
-      break;
+      return e.index;
     }
     case Aeg_certificate_kind::endpoint: {
-      from = leaf_[e.index];
       points.push_back(Site_point::endpoint(e.index));
-      const Cell& c = tree_.nodes[from].cell;
+      const Cell& c = tree_.nodes[leaf_[e.index]].cell;
       for (const auto& s : {c.floor, c.roof})
         if (s) {
           segments.push_back(*s);
           points.push_back(Site_point::endpoint(2 * *s));
           points.push_back(Site_point::endpoint(2 * *s + 1));
         }
-      break;
+      return leaf_[e.index];
     }
-    case Aeg_certificate_kind::flip: {
-      // A replay of the segment's first cuts remakes what lies below them.
-      std::vector<std::size_t> out = tops(e.index);
-      for (std::size_t& r : out) r = above_ties(r, Site_point::endpoint(2 * e.index));
-      return out;
-    }
+    case Aeg_certificate_kind::flip: segments.push_back(e.index); break;
   }
+  return 0;
+}
+
+template <class K>
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
+  if (e.kind == Aeg_certificate_kind::flip) {
+    // A replay of the segment's first cuts remakes what lies below them.
+    std::vector<std::size_t> out = tops(e.index);
+    for (std::size_t& r : out) r = above_ties(r, Site_point::endpoint(2 * e.index));
+    return out;
+  }
+  // The cuts the certificate is about, and the node its path starts from.
+  std::vector<Site_point> points;
+  std::vector<std::size_t> segments;
+  const std::size_t from = subjects(e, points, segments);
   std::size_t top = from;
   for (std::int32_t a = tree_.nodes[from].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent) {
     const Bsp_node& n = tree_.nodes[static_cast<std::size_t>(a)];
@@ -210,6 +223,33 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
   // a transient cell's walls, which meet there or at which floor and roof
   // meet).
   return {above_ties(top, points.front())};
+}
+
+template <class K>
+std::set<std::size_t> Aeg_kinetic_bsp<K>::changing(const std::vector<Entry>& entries,
+                                                   const std::vector<std::size_t>& roots) const {
+  std::vector<Site_point> points;
+  std::vector<std::size_t> segments, turning, at;
+  for (const Entry& e : entries) {
+    const std::size_t from = subjects(e, points, segments);
+    if (e.kind == Aeg_certificate_kind::flip) turning.push_back(e.index);
+    else at.push_back(from);
+  }
+  std::sort(points.begin(), points.end());
+  std::sort(segments.begin(), segments.end());
+  const auto named = [&](const Bsp_node& n) {
+    if (n.kind == Cut_kind::edge) return std::binary_search(segments.begin(), segments.end(), n.segment);
+    if (std::binary_search(points.begin(), points.end(), n.point)) return true;
+    return std::any_of(turning.begin(), turning.end(), [&](std::size_t s) { return n.point.on(s); });
+  };
+  for (const std::size_t v : roots)
+    for (const std::size_t n : tree_.preorder(v))
+      if (tree_.nodes[n].kind != Cut_kind::leaf && named(tree_.nodes[n])) at.push_back(n);
+  std::set<std::size_t> out;
+  for (const std::size_t n : at)
+    for (auto a = static_cast<std::int32_t>(n); a >= 0 && out.insert(static_cast<std::size_t>(a)).second;)
+      a = tree_.nodes[static_cast<std::size_t>(a)].parent;
+  return out;
 }
 
 template <class K>
@@ -244,34 +284,73 @@ std::size_t Aeg_kinetic_bsp<K>::above_ties(std::size_t top, const Site_point& at
 }
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, Batch& b) {
+bool Aeg_kinetic_bsp<K>::crossing(std::size_t i, std::size_t j) const {
+  const auto apart = [&](std::size_t p, std::size_t q) {
+    return pred_.side(Site_point::endpoint(2 * p), q, now_).sign !=
+           pred_.side(Site_point::endpoint(2 * p + 1), q, now_).sign;
+  };
+  return apart(i, j) && apart(j, i);
+}
+
+template <class K>
+bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<std::size_t> dirty, Batch& b) {
   bool changed = false;
   std::vector<Site_point> was, is;
-  std::set<std::size_t> above;  // the roots' ancestors, whose logs hold the locations of crossings found below
-  for (const std::size_t v : roots)
-    for (std::int32_t a = tree_.nodes[v].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
-      a = tree_.nodes[static_cast<std::size_t>(a)].parent;
+  // Slots whose certificates went (the endpoints beside them are looked at
+  // again), and nodes kept whole with a new cell.
+  std::vector<std::size_t> gone;
+  std::set<std::size_t> recelled;
+  const auto unmake = [&](std::size_t n) {
+    if (const auto it = transient_.find(n); it != transient_.end()) {
+      spare_.emplace(it->second.id.cell, it->second);
+      transient_.erase(it);
+    }
+  };
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
+                     {[&](std::size_t n) {
+                        unmake(n);
+                        gone.push_back(n);
+                      },
+                      [&](std::size_t from, std::size_t to) {
+                        unmake(from);
+                        const auto it = beside_.find(from);
+                        if (it == beside_.end()) return;
+                        const std::vector<std::size_t> moved = std::move(it->second);
+                        beside_.erase(it);
+                        for (const std::size_t e : moved) leaf_[e] = to;
+                        auto& list = beside_[to];
+                        list.insert(list.end(), moved.begin(), moved.end());
+                      },
+                      [&](std::size_t n) { recelled.insert(n); }});
   for (const std::size_t v : roots) {
     const std::string text = tree_.text(v);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
-    // The nodes below v go, with their certificates; v is made again.
-    std::set<std::size_t> old;
-    for (const std::size_t n : tree_.preorder(v)) {
-      old.insert(n);
-      if (const auto it = transient_.find(n); it != transient_.end()) {
-        spare_.emplace(it->second.id.cell, it->second);
-        transient_.erase(it);
-      }
-      if (n != v) log_.free.push_back(n);
+    std::vector<Arrival> arrivals = log_.at[v];
+    const std::size_t r = cut_rank(tree_.nodes[v], scene_.rank);
+    const std::int32_t up = tree_.nodes[v].parent;
+    if (r < scene_.rank.size() && (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < r)) {
+      // v, the first cut of its segment on its path, is made again with its
+      // segment's cuts below it; the old subtrees of later cuts below them
+      // are kept where their arrivals did not change. A crossing of two
+      // later segments found below v is logged at v, and a remake locates it
+      // as logged: one gone now goes (one born now is found below).
+      std::erase_if(arrivals, [&](const Arrival& a) {
+        return a.kind == Arrival::Kind::intersection && scene_.rank[a.a.a] > r && scene_.rank[a.a.b] > r &&
+               !crossing(a.a.a, a.a.b);
+      });
+      fit.remake(v, r, arrivals, fit.set_aside(v, r));
+    } else {
+      fit.discard(v, false);
+      builder.replay(v, arrivals);
     }
-    const std::vector<Arrival> arrivals = log_.at[v];
-    builder.replay(v, arrivals);
     const std::vector<Site_point> y = crossings_below(tree_, v);
     is.insert(is.end(), y.begin(), y.end());
     changed = changed || tree_.text(v) != text;
     ++b.replays;
+    // The certificates of the nodes made, and of the kept ones with a new
+    // cell (certify_below keeps a node's certificate only with its cell).
     // The ancestors' transience may change with the point cuts below v:
     // walking up, while none lies below, each node's other child is read.
     bool points = certify_below(v);
@@ -284,18 +363,28 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, Batch& b)
       else if (!transient_.count(u)) make_transient(u);
       c = u;
     }
-    for (const std::size_t n : old) remake_beside(n, v);
+    // The endpoints beside a node gone, and beside a leaf kept whose cell
+    // moved (kept when its floor and roof, their neighbours, stayed).
+    for (const std::size_t n : gone) remake_beside(n, v);
+    for (const std::size_t n : recelled)
+      if (tree_.nodes[n].kind == Cut_kind::leaf) remake_beside(n, n);
+    gone.clear();
+    recelled.clear();
   }
   spare_.clear();  // cells gone with their nodes
   b.nodes_rebuilt += builder.added();
   // A crossing cut below a root before and nowhere now: its location, logged
-  // above the roots, goes.
+  // above the roots and above the cells taken whole, goes.
   std::sort(was.begin(), was.end());
   std::sort(is.begin(), is.end());
-  std::vector<Site_point> gone;
-  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(gone));
-  gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
-  unlog_crossings(log_, above, gone);
+  std::vector<Site_point> lost;
+  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(lost));
+  lost.erase(std::unique(lost.begin(), lost.end()), lost.end());
+  std::set<std::size_t> above(fit.tops().begin(), fit.tops().end());
+  for (const std::size_t v : roots)
+    for (std::int32_t a = tree_.nodes[v].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
+      a = tree_.nodes[static_cast<std::size_t>(a)].parent;
+  unlog_crossings(log_, above, lost);
   return changed;
 }
 
@@ -357,7 +446,6 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
     std::set<std::size_t> named;
     for (const Entry& e : entries)
       for (const std::size_t r : roots(e)) named.insert(r);
-    for (const std::size_t v : failing_transient) transient_.erase(v);
     std::vector<std::size_t> top;
     for (const std::size_t r : named) {
       bool nested = false;
@@ -365,7 +453,9 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
         nested = named.count(static_cast<std::size_t>(a)) > 0;
       if (!nested) top.push_back(r);
     }
-    b.changed = replay(top, b);
+    std::set<std::size_t> dirty = changing(entries, top);
+    for (const std::size_t v : failing_transient) transient_.erase(v);
+    b.changed = replay(top, std::move(dirty), b);
   }
   // Every failing transient node and endpoint certificate lay below a root,
   // and was made again there; a flip's is made again here.

@@ -211,7 +211,7 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   std::vector<Site_point> was, is;
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
-                     {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }});
+                     {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}});
   for (const auto& [v, rank] : roots) {
     before.push_back(tree_.text(v));
     arrivals.push_back(log_.at[v]);

@@ -163,6 +163,7 @@ void Subtree_fit<K>::refresh_cells(std::size_t v) {
       Bsp_node& child = tree_.nodes[static_cast<std::size_t>(node.child[side])];
       if (child.cell == c) continue;
       child.cell = c;
+      if (hooks_.recelled) hooks_.recelled(static_cast<std::size_t>(node.child[side]));
       stack.push_back(static_cast<std::size_t>(node.child[side]));
     }
   }

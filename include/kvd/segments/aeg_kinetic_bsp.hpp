@@ -30,9 +30,14 @@
 // cuts it is about (a transient node's walls, floor and roof; an endpoint's
 // vertex cut, its neighbours' edge cuts and their endpoints' vertex cuts; a
 // flipping segment's cuts), and the subtree of the topmost of those on the
-// certificate's path is replayed from the construction's log
+// certificate's path is made again from the construction's log
 // (kvd/detail/segments/bsp_builder.hpp), or of a cut higher up that passes
-// through the event's point at that instant (above_ties). The argument that
+// through the event's point at that instant (above_ties). When that node is
+// its segment's first cut on its path, only its segment's cuts are made
+// again; the later segments' steps are decided down to the cells they make,
+// and a cell whose arrivals are those of an old subtree holding no node
+// where a sign may change (changing) takes it whole, as the kept run's
+// frontier nodes do (Subtree_fit); else the subtree is replayed. The argument that
 // this subtree holds every change (the changed sign is decided at one of
 // those cuts, and the arrivals above it stay) is by the cases of
 // proofs/segment-certificates.md, and is checked against the run that keeps
@@ -166,8 +171,18 @@ private:
   // B_{i-1} that one meets lies below another's; else nothing is done and
   // false returned.
   bool flip_in_place(const std::vector<std::size_t>& turning, const std::set<std::size_t>& failing, Batch& b);
+  // What a failing certificate is about: the points and segments of its
+  // cuts (see above; a flip's segment), and the node its path starts from
+  // (a transient node, an endpoint's leaf; none for a flip).
+  std::size_t subjects(const Entry& e, std::vector<Site_point>& points, std::vector<std::size_t>& segments) const;
   // The subtrees to replay for a failing certificate (see above).
   std::vector<std::size_t> roots(const Entry& e) const;
+  // The nodes where a sign may change: the failing transient nodes and
+  // endpoints' leaves, and below the roots every cut of a point or segment
+  // the failing certificates are about (for a flip, every point on its
+  // segment), with their ancestors. A replay keeps an old subtree whole
+  // only where its arrivals are the same and it holds none of them.
+  std::set<std::size_t> changing(const std::vector<Entry>& entries, const std::vector<std::size_t>& roots) const;
   // The topmost of `top` and its ancestors whose cut `at` meets at now (a
   // sign there is zero at now and decided just after, or by the
   // perturbation): a change at `at` may cross that cut, as where a crossing
@@ -176,9 +191,14 @@ private:
   // With `identities` false, a sign zero by identity (`at` a crossing on
   // the cut's segment, for good) is no tie.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
-  // Replays the subtrees of `roots` (none below another) and makes their
-  // certificates again; whether the tree changed.
-  bool replay(const std::vector<std::size_t>& roots, Batch& b);
+  // Whether segments i and j cross just after now: the endpoints of each lie
+  // on either side of the other's line.
+  bool crossing(std::size_t i, std::size_t j) const;
+  // Makes the subtrees of `roots` (none below another) again, keeping the
+  // old subtrees below each root's cuts whose arrivals did not change and
+  // that hold no node of `dirty` (Subtree_fit), and makes the certificates
+  // of the nodes made or given a new cell; whether the tree changed.
+  bool replay(const std::vector<std::size_t>& roots, std::set<std::size_t> dirty, Batch& b);
   // Makes the certificates of the transient nodes in v's subtree (a node is
   // transient when its parent is a point cut and no point cut lies in its
   // subtree); whether a point cut lies there.

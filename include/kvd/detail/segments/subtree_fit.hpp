@@ -1,11 +1,13 @@
 // A node of the cylindrical BSP made again with the old subtrees below it
 // kept where their arrivals did not change (proofs/segment-local-update.md,
-// "Cells kept"). Kinetic_segment_bsp uses it for its frontier nodes, whose
-// logs the frontier replay has just made again: it trusts the logged
-// crossings of later segments, so it holds only where no other segment's
-// steps changed, which the run on the paper's certificates cannot yet tell.
-// The run keeps its certificates by node slot, so it is told when a node's
-// are to go (forget) or move to another slot (moved).
+// "Cells kept"). Both kinetic runs use it: Kinetic_segment_bsp for its
+// frontier nodes, Aeg_kinetic_bsp for the subtrees its failing certificates
+// name. The remake locates the crossings of later segments as the node's
+// log holds them, so that log must hold only crossings that exist now (the
+// frontier replay changes one segment's steps; the run on the paper's set
+// drops those gone). Each run keeps its certificates by node slot, so it is
+// told when a node's are to go (forget) or move to another slot (moved), and
+// which nodes kept whole got a new cell (recelled, optional).
 #pragma once
 
 #include <cstddef>
@@ -22,6 +24,7 @@ namespace kvd::segments {
 struct Subtree_fit_hooks {
   std::function<void(std::size_t)> forget;              // the node's certificates go
   std::function<void(std::size_t, std::size_t)> moved;  // a node's certificates move from one slot to another
+  std::function<void(std::size_t)> recelled;            // a node kept whole got a new cell
 };
 
 template <class K>
