@@ -307,6 +307,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
     }
   };
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  builder.log_traces_only();
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
                      {[&](std::size_t n) {
                         unmake(n);

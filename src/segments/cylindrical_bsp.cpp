@@ -222,9 +222,11 @@ void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
   for (std::int32_t n = b_.nodes[to].parent; n >= 0; n = b_.nodes[static_cast<std::size_t>(n)].parent)
     path.push_back(static_cast<std::size_t>(n));
   for (std::size_t k = path.size() - 1; k > 0; --k) {
-    p_.at_node(static_cast<std::int32_t>(path[k]));
-    if (step(path[k], a) != path[k - 1])
-      throw Bsp_contradiction("cylindrical BSP: a crossing found below a node does not reach it");
+    if (decide_traces_) {
+      p_.at_node(static_cast<std::int32_t>(path[k]));
+      if (step(path[k], a) != path[k - 1])
+        throw Bsp_contradiction("cylindrical BSP: a crossing found below a node does not reach it");
+    }
     if (log_) log_in_order(log_->at[path[k]], a, p_.scene().rank);
   }
 }

@@ -122,6 +122,10 @@ public:
                std::map<std::size_t, std::vector<Arrival>>& at);
   // The nodes added since the builder was made.
   std::size_t added() const { return added_; }
+  // A crossing found below a replayed node is logged above it without the
+  // signs of its way down being decided again: for a run that keeps no
+  // sign as a certificate (those signs are not a certificate of its set).
+  void log_traces_only() { decide_traces_ = false; }
 
 private:
   void steps(std::size_t v, const std::vector<Arrival>& arrivals);
@@ -143,6 +147,7 @@ private:
   Cylindrical_bsp& b_;
   Build_log* log_;
   std::size_t added_ = 0;
+  bool decide_traces_ = true;
   // While rerouting: the frontier's rank, and where arrivals are collected
   // instead of logged.
   std::size_t frontier_ = 0;
