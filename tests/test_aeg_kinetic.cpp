@@ -123,6 +123,11 @@ void side_by_side(const std::string& name, const Segment_scene& s, bool neighbou
     INFO(name << ": batch at t = " << b.time.to_string());
     CHECK(b.changed);
     CHECK(same_log(run, pred, b.time));
+    // The leaf each endpoint's certificate reads is the one beside it.
+    for (std::size_t e = 0; e < 2 * s.segments.size(); ++e) {
+      INFO("the leaf beside " << point_name(Site_point::endpoint(e)));
+      CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+    }
     REQUIRE(next(kept));
     REQUIRE(kernel.compare(*next(kept), b.time) == 0);
     kept.advance();

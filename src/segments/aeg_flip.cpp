@@ -179,18 +179,11 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(const std::vector<std::size_t>& turning, 
       if (walks(a) && a.segment != s) std::swap(a.a, a.b);
     edited.push_back(x);
   }
-  // Certificates: the transient nodes with a new cell, the endpoints beside
-  // a leaf with one, and the segments' own, whose far side is now the other one.
+  // Certificates: the transient nodes with a new cell and the endpoints
+  // beside a leaf with one (the turning segments' own are the caller's).
   for (const std::size_t x : edited)
     if (transient_.count(x) || failing.count(x)) make_transient(x);
-  for (const std::size_t s : turning)
-    for (const std::size_t e : {2 * s, 2 * s + 1}) {
-      std::vector<std::size_t>& near = beside_[leaf_[e]];
-      near.erase(std::remove(near.begin(), near.end(), e), near.end());
-    }
   for (const std::size_t x : edited) remake_beside(x, x);
-  for (const std::size_t s : turning)
-    for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
   b.flipped_in_place = sites.size();
   b.nodes_edited = edited.size();
   return true;

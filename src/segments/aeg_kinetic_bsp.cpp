@@ -307,7 +307,9 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
     }
   };
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
-  builder.log_traces_only();
+  // Validating, the way down to a crossing found below is decided again: a
+  // check that the root was high enough.
+  if (!validate_) builder.log_traces_only();
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
                      {[&](std::size_t n) {
                         unmake(n);
@@ -365,10 +367,10 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
       c = u;
     }
     // The endpoints beside a node gone, and beside a leaf kept whose cell
-    // moved (kept when its floor and roof, their neighbours, stayed).
+    // moved (it may no longer be the leaf beside them), found again from v.
     for (const std::size_t n : gone) remake_beside(n, v);
     for (const std::size_t n : recelled)
-      if (tree_.nodes[n].kind == Cut_kind::leaf) remake_beside(n, n);
+      if (tree_.nodes[n].kind == Cut_kind::leaf) remake_beside(n, v);
     gone.clear();
     recelled.clear();
   }
@@ -438,6 +440,14 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
     else failing_transient.insert(e.index);
   }
   std::sort(b.failing.begin(), b.failing.end(), before);
+  // A turning segment's endpoints have their far side changed: they leave
+  // their leaves' lists now, and are found again from the root after the
+  // update, whether the flip is done in place or replayed.
+  for (const std::size_t s : turning)
+    for (const std::size_t e : {2 * s, 2 * s + 1}) {
+      std::vector<std::size_t>& near = beside_[leaf_[e]];
+      near.erase(std::remove(near.begin(), near.end(), e), near.end());
+    }
   if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
   } else {
@@ -460,7 +470,10 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   }
   // Every failing transient node and endpoint certificate lay below a root,
   // and was made again there; a flip's is made again here.
-  for (const std::size_t s : turning) make_flip(s);
+  for (const std::size_t s : turning) {
+    make_flip(s);
+    for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
+  }
   failing_endpoints_.clear();
   next_event_time();  // up to the next queue minimum: stale entries off the heap
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

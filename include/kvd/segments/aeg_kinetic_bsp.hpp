@@ -114,6 +114,9 @@ public:
   // construction's log by those slots, for a comparison with a fresh build's.
   const Cylindrical_bsp& edited_tree() const { return tree_; }
   const Build_log& log() const { return log_; }
+  // The leaf beside endpoint e as the run keeps it (its certificate reads
+  // that leaf's floor and roof), for a comparison with aeg_leaf.
+  std::size_t leaf_beside(std::size_t e) const { return leaf_[e]; }
   // The earliest failure after now, within the scene's span.
   std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
