@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "kvd/detail/kinetic/validator.hpp"
+#include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/detail/segments/subtree_fit.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -55,12 +56,25 @@ Aeg_kinetic_bsp<K>::Aeg_kinetic_bsp(const K& k, Segment_scene scene, bool valida
 }
 
 template <class K>
+std::vector<std::pair<Aeg_certificate_id, std::optional<typename K::Time>>> Aeg_kinetic_bsp<K>::certificate_list()
+    const {
+  std::vector<std::pair<Aeg_certificate_id, std::optional<Time>>> list;
+  for (const auto& [v, c] : transient_) list.emplace_back(c.id, c.fails);
+  for (const auto* certs : {&endpoint_, &flip_})
+    for (const Certificate& c : *certs) list.emplace_back(c.id, c.fails);
+  std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return before(a.first, b.first); });
+  return list;
+}
+
+template <class K>
 void Aeg_kinetic_bsp<K>::rebuild() {
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   builder.start();
   for (const std::size_t s : scene_.priority_order) builder.insert(static_cast<std::uint32_t>(s));
   transient_.clear();
   queue_.clear();
+  by_segment_.clear();
+  indexed_ = 0;
   const std::size_t n = pred_.size();
   endpoint_.assign(2 * n, {});
   flip_.assign(n, {});
@@ -72,21 +86,151 @@ void Aeg_kinetic_bsp<K>::rebuild() {
 }
 
 template <class K>
-template <class F>
-void Aeg_kinetic_bsp<K>::make(Certificate& c, F decide, std::size_t index) {
+void Aeg_kinetic_bsp<K>::ask(const Certificate& c, std::size_t index) {
+  switch (c.id.kind) {
+    case Aeg_certificate_kind::transient: {
+      const Cell& w = c.id.cell;
+      if (w.left && w.right) pred_.compare_x(*w.left, *w.right, now_);
+      if (w.floor && w.roof)
+        for (const auto& wall : {w.left, w.right})
+          if (wall) pred_.order_at(*wall, *w.roof, *w.floor, now_);
+      return;
+    }
+    case Aeg_certificate_kind::endpoint: {
+      const Site_point p = Site_point::endpoint(index);
+      for (const auto& s : {c.near.floor, c.near.roof}) {
+        if (!s) continue;
+        pred_.side(p, *s, now_);
+        pred_.compare_x(p, Site_point::endpoint(2 * *s), now_);
+        pred_.compare_x(p, Site_point::endpoint(2 * *s + 1), now_);
+      }
+      return;
+    }
+    case Aeg_certificate_kind::flip:
+      pred_.compare_x(Site_point::endpoint(2 * index + 1), Site_point::endpoint(2 * index), now_);
+      return;
+  }
+}
+
+template <class K>
+std::vector<int> Aeg_kinetic_bsp<K>::signs(const Certificate& c, std::size_t index) {
+  std::vector<int> out;
+  pred_.record([&](const Segment_certificate_key&, std::vector<P>&&, std::int32_t, int sign) { out.push_back(sign); });
+  ask(c, index);
+  pred_.record({});
+  return out;
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::make(Certificate& c, std::size_t index) {
   // Every sign decided by arithmetic hands over its polynomials (identities
   // have none: they never change).
   polys_.clear();
   pred_.record([this](const Segment_certificate_key&, std::vector<P>&& polys, std::int32_t, int) {
     for (P& q : polys) polys_.push_back(std::move(q));
   });
-  decide();
+  ask(c, index);
   pred_.record({});
+  ++made_;
   c.version = ++versions_;
   c.fails = roots_.first_root(k_, polys_, now_);
   // A failure after the span's end is no event.
   if (c.fails && bounded_ && k_.compare(*c.fails, end_) > 0) c.fails.reset();
   if (c.fails) queue_.push({*c.fails, c.id.kind, index, c.version});
+  this->index(c, index);
+}
+
+namespace {
+
+// The segments a point lies on (an endpoint's, or the two of a crossing).
+template <class Out>
+void segments_of(const Site_point& p, Out add) {
+  if (p.kind == Site_point::Kind::endpoint) return add(p.a / 2);
+  add(p.a);
+  add(p.b);
+}
+
+}  // namespace
+
+template <class K>
+void Aeg_kinetic_bsp<K>::index(const Certificate& c, std::size_t index) {
+  if (by_segment_.empty()) by_segment_.resize(pred_.size());
+  enter(c, index);
+  // At most six entries a certificate (a transient cell's two crossings,
+  // floor and roof): twelve is twice that.
+  if (indexed_ <= 12 * certificates() + 64) return;
+  for (auto& held : by_segment_) held.clear();
+  indexed_ = 0;
+  for (auto& [v, t] : transient_) enter(t, v);
+  for (std::size_t e = 0; e < endpoint_.size(); ++e)
+    if (endpoint_[e].version > 0) enter(endpoint_[e], e);
+  for (std::size_t s = 0; s < flip_.size(); ++s)
+    if (flip_[s].version > 0) enter(flip_[s], s);
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::enter(const Certificate& c, std::size_t index) {
+  const Held h{c.id.kind, index};
+  const auto add = [&](std::size_t s) {
+    by_segment_[s].push_back(h);
+    ++indexed_;
+  };
+  switch (c.id.kind) {
+    case Aeg_certificate_kind::transient: {
+      const Cell& w = c.id.cell;
+      for (const auto& p : {w.left, w.right})
+        if (p) segments_of(*p, add);
+      for (const auto& s : {w.floor, w.roof})
+        if (s) add(*s);
+      break;
+    }
+    case Aeg_certificate_kind::endpoint:
+      add(index / 2);
+      for (const auto& s : {c.near.floor, c.near.roof})
+        if (s) add(*s);
+      break;
+    case Aeg_certificate_kind::flip: add(index); break;
+  }
+}
+
+template <class K>
+typename Aeg_kinetic_bsp<K>::Certificate& Aeg_kinetic_bsp<K>::held(const Held& h) {
+  switch (h.kind) {
+    case Aeg_certificate_kind::transient: return transient_.at(h.index);
+    case Aeg_certificate_kind::endpoint: return endpoint_[h.index];
+    case Aeg_certificate_kind::flip: break;
+  }
+  return flip_[h.index];
+}
+
+template <class K>
+std::vector<typename Aeg_kinetic_bsp<K>::Held> Aeg_kinetic_bsp<K>::naming(std::size_t s) {
+  if (by_segment_.empty()) return {};
+  // An entry stays while a certificate in force at its place names s: a
+  // node slot's may be another cell's since, and an endpoint's another
+  // leaf's.
+  const auto names = [&](const Held& h) {
+    if (h.kind == Aeg_certificate_kind::transient && !transient_.count(h.index)) return false;
+    const Certificate& c = held(h);
+    if (c.version == 0) return false;
+    bool found = false;
+    const auto is = [&](std::size_t t) { found = found || t == s; };
+    const bool cell = h.kind == Aeg_certificate_kind::transient;
+    const Cell& w = cell ? c.id.cell : c.near;
+    for (const auto& p : {w.left, w.right})
+      if (p && cell) segments_of(*p, is);
+    if (h.kind != Aeg_certificate_kind::flip)
+      for (const auto& t : {w.floor, w.roof})
+        if (t) is(*t);
+    if (!cell) is(h.kind == Aeg_certificate_kind::endpoint ? h.index / 2 : h.index);
+    return found;
+  };
+  std::vector<Held>& entries = by_segment_[s];
+  std::erase_if(entries, [&](const Held& h) { return !names(h); });
+  std::vector<Held> out = entries;
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 template <class K>
@@ -98,20 +242,15 @@ void Aeg_kinetic_bsp<K>::make_transient(std::size_t v) {
     spare_.erase(it);
     cert.version = ++versions_;
     if (cert.fails) queue_.push({*cert.fails, Aeg_certificate_kind::transient, v, cert.version});
+    index(cert, v);
     return;
   }
   cert.id = {Aeg_certificate_kind::transient, 0, c};
-  make(cert, [&] {
-    if (c.left && c.right) pred_.compare_x(*c.left, *c.right, now_);
-    if (c.floor && c.roof)
-      for (const auto& wall : {c.left, c.right})
-        if (wall) pred_.order_at(*wall, *c.roof, *c.floor, now_);
-  }, v);
+  make(cert, v);
 }
 
 template <class K>
 void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from) {
-  const Site_point p = Site_point::endpoint(e);
   // The leaf beside p: its floor and roof are p's neighbours.
   const std::size_t v = aeg_leaf(tree_, pred_, now_, e, from);
   leaf_[e] = v;
@@ -122,14 +261,13 @@ void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from) {
     return;
   cert.id = {Aeg_certificate_kind::endpoint, e, {}};
   cert.near = c;
-  make(cert, [&] {
-    for (const auto& s : {c.floor, c.roof}) {
-      if (!s) continue;
-      pred_.side(p, *s, now_);
-      pred_.compare_x(p, Site_point::endpoint(2 * *s), now_);
-      pred_.compare_x(p, Site_point::endpoint(2 * *s + 1), now_);
-    }
-  }, e);
+  make(cert, e);
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::detach(std::size_t e) {
+  std::vector<std::size_t>& near = beside_[leaf_[e]];
+  near.erase(std::remove(near.begin(), near.end(), e), near.end());
 }
 
 template <class K>
@@ -145,7 +283,7 @@ template <class K>
 void Aeg_kinetic_bsp<K>::make_flip(std::size_t s) {
   Certificate& cert = flip_[s];
   cert.id = {Aeg_certificate_kind::flip, s, {}};
-  make(cert, [&] { pred_.compare_x(Site_point::endpoint(2 * s + 1), Site_point::endpoint(2 * s), now_); }, s);
+  make(cert, s);
 }
 
 template <class K>
@@ -411,7 +549,7 @@ std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
 
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
-  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0};
+  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0, 0};
   if (validate_) {
     const Time mid = kinetic::between(k_, now_, b.time);
     ++validations_;
@@ -420,20 +558,29 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
                           k_.to_string(mid));
   }
   const auto start = std::chrono::steady_clock::now();
+  const std::size_t made = made_;
   // The failing certificates.
   now_ = b.time;
   std::vector<Entry> entries;
-  std::set<std::size_t> failing_transient;
-  std::vector<std::size_t> turning;
   while (!queue_.empty() && (stale(queue_.top()) || k_.compare(queue_.top().time, b.time) == 0)) {
     const Entry e = queue_.top();
     queue_.pop();
-    if (stale(e)) continue;
-    const Certificate& c = e.kind == Aeg_certificate_kind::transient ? transient_.at(e.index)
-                           : e.kind == Aeg_certificate_kind::endpoint ? endpoint_[e.index]
-                                                                      : flip_[e.index];
-    b.failing.push_back(c.id);
-    entries.push_back(e);
+    if (!stale(e)) entries.push_back(e);
+  }
+  update(entries, b);
+  next_event_time();  // up to the next queue minimum: stale entries off the heap
+  b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  b.certificates = certificates();
+  b.certificates_made = made_ - made;
+  return b;
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
+  std::set<std::size_t> failing_transient;
+  std::vector<std::size_t> turning;
+  for (const Entry& e : entries) {
+    b.failing.push_back(held({e.kind, e.index}).id);
     // A failing certificate is made again, not kept.
     if (e.kind == Aeg_certificate_kind::flip) turning.push_back(e.index);
     else if (e.kind == Aeg_certificate_kind::endpoint) failing_endpoints_.insert(e.index);
@@ -444,13 +591,10 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   // their leaves' lists now, and are found again from the root after the
   // update, whether the flip is done in place or replayed.
   for (const std::size_t s : turning)
-    for (const std::size_t e : {2 * s, 2 * s + 1}) {
-      std::vector<std::size_t>& near = beside_[leaf_[e]];
-      near.erase(std::remove(near.begin(), near.end(), e), near.end());
-    }
+    for (const std::size_t e : {2 * s, 2 * s + 1}) detach(e);
   if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
-  } else {
+  } else if (!entries.empty()) {
     // The subtrees the failing certificates name, none below another, their
     // ties read at the batch's instant (signs that vanish there cost most:
     // they are why a flip done in place does not read them).
@@ -475,9 +619,53 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
     for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
   }
   failing_endpoints_.clear();
-  next_event_time();  // up to the next queue minimum: stale entries off the heap
+}
+
+template <class K>
+std::vector<typename Aeg_kinetic_bsp<K>::Batch> Aeg_kinetic_bsp<K>::advance_to(const Time& t) {
+  std::vector<Batch> batches;
+  while (const auto next = next_event_time()) {
+    if (k_.compare(*next, t) > 0) break;
+    batches.push_back(advance());
+  }
+  // No certificate fails in (now, t]: their failure times stay.
+  if (k_.compare(now_, t) < 0) now_ = t;
+  return batches;
+}
+
+template <class K>
+typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::set_motion(std::size_t segment, const Segment_motion& motion) {
+  check_motion_change(k_, scene_, segment, motion, now_, bounded_ ? std::optional<Time>(end_) : std::nullopt);
+  Batch b{now_, {}, false, 0, 0, 0, 0, 0, 0, 0};
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t made = made_;
+  // The certificates naming the segment (Lemma 3.1), their signs just after
+  // now under the old motion and then the new: the same signs make new
+  // polynomials and a new failure time; other signs are a failure now.
+  const std::vector<Held> named = naming(segment);
+  std::vector<std::vector<int>> was;
+  for (const Held& h : named) was.push_back(signs(held(h), h.index));
+  scene_.segments[segment].motion = motion;
+  pred_.refresh(segment, now_);
+  std::vector<Entry> failing;
+  for (std::size_t i = 0; i < named.size(); ++i) {
+    const Held& h = named[i];
+    Certificate& c = held(h);
+    if (signs(c, h.index) != was[i]) {
+      failing.push_back({now_, h.kind, h.index, c.version});
+    } else if (h.kind == Aeg_certificate_kind::endpoint) {
+      detach(h.index);
+      failing_endpoints_.insert(h.index);
+      make_endpoint(h.index, leaf_[h.index]);
+      failing_endpoints_.erase(h.index);
+    } else {
+      make(c, h.index);
+    }
+  }
+  update(failing, b);
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certificates();
+  b.certificates_made = made_ - made;
   return b;
 }
 

@@ -8,6 +8,7 @@
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
+#include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/detail/segments/subtree_fit.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
@@ -390,21 +391,7 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
 
 template <class K>
 bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motion& motion) {
-  if (segment >= scene_.segments.size()) throw std::invalid_argument("set_motion: no segment " + std::to_string(segment));
-  Segment_scene changed = scene_;
-  changed.segments[segment].motion = motion;
-  using FT = typename K::FT;
-  for (const std::size_t e : {2 * segment, 2 * segment + 1}) {
-    const auto a = scene_.endpoint(e), b = changed.endpoint(e);
-    const P w = poly_from_rational<FT>(b[2]);
-    if (k_.sign_at(w, now_) == 0) throw std::invalid_argument("set_motion: W is zero now");
-    if (const auto r = k_.next_root(w, now_); r && !(bounded_ && k_.compare(*r, end_) > 0))
-      throw std::invalid_argument("set_motion: W vanishes at t = " + k_.to_string(*r) + ", inside the span");
-    for (const std::size_t c : {0, 1})
-      if (k_.sign_at(poly_from_rational<FT>(a[c] * b[2] - b[c] * a[2]), now_) != 0)
-        throw std::invalid_argument("set_motion: the new motion moves endpoint " + std::to_string(e % 2) +
-                                    " away from where it is now");
-  }
+  check_motion_change(k_, scene_, segment, motion, now_, bounded_ ? std::optional<Time>(end_) : std::nullopt);
   scene_.segments[segment].motion = motion;
   pred_.refresh(segment, now_);
   // The certificates naming the segment, found through the index (Lemma 3.1:

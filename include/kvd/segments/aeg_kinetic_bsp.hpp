@@ -47,6 +47,7 @@
 // the nodes to replay from them. Exact kernel only.
 #pragma once
 
+#include <compare>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -54,12 +55,14 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "kvd/detail/kinetic/root_cache.hpp"
 #include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
+#include "kvd/segments/segment_scene.hpp"
 
 namespace kvd::segments {
 
@@ -94,6 +97,7 @@ public:
     std::size_t nodes_rebuilt = 0;            // nodes made again
     std::size_t flipped_in_place = 0;         // leaves of B_{i-1} of a flip turned in place, not replayed
     std::size_t nodes_edited = 0;             // nodes whose children, cell or log those edits changed
+    std::size_t certificates_made = 0;        // made again (computed, not kept), the failing ones included
     double update_seconds = 0;                // the tree and its certificates made again
   };
 
@@ -110,6 +114,9 @@ public:
   // The tree in force, numbered afresh (the run edits its own in place).
   Cylindrical_bsp tree() const { return tree_.compacted(); }
   std::size_t certificates() const { return transient_.size() + endpoint_.size() + flip_.size(); }
+  // The certificates in force, each with its failure time (none: not within
+  // the span), in the order Batch::failing keeps.
+  std::vector<std::pair<Aeg_certificate_id, std::optional<Time>>> certificate_list() const;
   // The tree in force as the run edits it (unused slots included) and its
   // construction's log by those slots, for a comparison with a fresh build's.
   const Cylindrical_bsp& edited_tree() const { return tree_; }
@@ -121,6 +128,16 @@ public:
   std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
   Batch advance();
+  // Processes every batch at a time <= t, then moves now to t (if later).
+  std::vector<Batch> advance_to(const Time& t);
+  // A flight-plan change: segment `segment` follows `motion` from now on.
+  // The motion must put the segment where it is now (std::invalid_argument
+  // otherwise, and when W vanishes at now or later in the span). Only the
+  // certificates naming the segment are made again (Lemma 3.1: O(k_i + 1),
+  // found through an index by segment); those whose signs just after now
+  // the new motion changes fail now, and are updated as a batch's are. The
+  // batch returned is that one, at now (failing empty when none did).
+  Batch set_motion(std::size_t segment, const Segment_motion& motion);
   // The validations that found the tree in force different from a fresh
   // build, described, and how many ran.
   const std::vector<std::string>& validation_failures() const { return failures_; }
@@ -147,12 +164,36 @@ private:
     std::uint64_t version;
   };
 
+  // A certificate as the index by segment names it.
+  struct Held {
+    Aeg_certificate_kind kind;
+    std::size_t index;
+    friend auto operator<=>(const Held&, const Held&) = default;
+  };
+
   // The tree, its log and every certificate just after now.
   void rebuild();
+  // Asks the predicates for the signs of certificate c (of node, endpoint
+  // or segment `index`): its cell's for a transient node, its near leaf's
+  // floor and roof for an endpoint, its endpoints' x order for a segment.
+  void ask(const Certificate& c, std::size_t index);
+  // Those signs just after now.
+  std::vector<int> signs(const Certificate& c, std::size_t index);
   // The certificate made again and queued at its failure: the first root
-  // after now of the polynomials of the signs `decide` asks for.
-  template <class F>
-  void make(Certificate& c, F decide, std::size_t index);
+  // after now of the polynomials of its signs.
+  void make(Certificate& c, std::size_t index);
+  // Certificate c entered in the index under each segment it names, and
+  // the index made again when it has grown too large.
+  void index(const Certificate& c, std::size_t index);
+  void enter(const Certificate& c, std::size_t index);
+  // The certificates in force naming segment s (entries gone since dropped).
+  std::vector<Held> naming(std::size_t s);
+  Certificate& held(const Held& h);
+  // Endpoint e's certificate taken off its leaf's list, to be found again.
+  void detach(std::size_t e);
+  // The batch of the failing certificates `entries` at now: the tree and
+  // the certificates updated.
+  void update(const std::vector<Entry>& entries, Batch& b);
   // A transient node's certificate: taken from spare_ when a node of a
   // replayed subtree had the same cell (the same signs, so the same failure
   // time: it has not failed), else made.
@@ -222,13 +263,20 @@ private:
   // During an update: the certificates of the transient nodes of the
   // replayed subtrees (failing ones left out), and the failing endpoints.
   std::map<Cell, Certificate, Cell_less> spare_;
-  std::set<std::size_t> failing_endpoints_;
+  std::set<std::size_t> failing_endpoints_;  // made again, not kept: failing, or named by a flight-plan change
   std::vector<Certificate> endpoint_, flip_;
   std::vector<std::size_t> leaf_;  // per endpoint: the leaf beside it (aeg_neighbours)
   std::map<std::size_t, std::vector<std::size_t>> beside_;  // per leaf slot: the endpoints it is beside
   kinetic::Time_heap<K, Entry> queue_{k_};
   std::uint64_t versions_ = 0;
   std::vector<P> polys_;           // of the certificate being made
+  std::size_t made_ = 0;           // certificates made, for Batch::certificates_made
+  // Per segment, the certificates naming it, some gone since (naming drops
+  // them); made again from the certificates when it holds twice as many
+  // entries as they can name, so that its size stays within a constant of
+  // theirs at a constant amortized cost per certificate made.
+  std::vector<std::vector<Held>> by_segment_;
+  std::size_t indexed_ = 0;
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;

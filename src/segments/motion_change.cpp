@@ -1,0 +1,39 @@
+// The checks of a flight-plan change (kvd/detail/segments/motion_change.hpp).
+#include "kvd/detail/segments/motion_change.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/kernel/kernel.hpp"
+
+namespace kvd::segments {
+
+template <class K>
+void check_motion_change(const K& k, const Segment_scene& scene, std::size_t segment, const Segment_motion& motion,
+                         const typename K::Time& now, const std::optional<typename K::Time>& end) {
+  if (segment >= scene.segments.size()) throw std::invalid_argument("set_motion: no segment " + std::to_string(segment));
+  Segment_scene changed = scene;
+  changed.segments[segment].motion = motion;
+  using FT = typename K::FT;
+  using P = typename K::Poly;
+  for (const std::size_t e : {2 * segment, 2 * segment + 1}) {
+    const auto a = scene.endpoint(e), b = changed.endpoint(e);
+    const P w = poly_from_rational<FT>(b[2]);
+    if (k.sign_at(w, now) == 0) throw std::invalid_argument("set_motion: W is zero now");
+    if (const auto r = k.next_root(w, now); r && !(end && k.compare(*r, *end) > 0))
+      throw std::invalid_argument("set_motion: W vanishes at t = " + k.to_string(*r) + ", inside the span");
+    for (const std::size_t c : {0, 1})
+      if (k.sign_at(poly_from_rational<FT>(a[c] * b[2] - b[c] * a[2]), now) != 0)
+        throw std::invalid_argument("set_motion: the new motion moves endpoint " + std::to_string(e % 2) +
+                                    " away from where it is now");
+  }
+}
+
+#define KVD_INSTANTIATE_CHECK_MOTION_CHANGE(K)                                                                 \
+  template void check_motion_change<K>(const K&, const Segment_scene&, std::size_t, const Segment_motion&, \
+                                       const typename K::Time&, const std::optional<typename K::Time>&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_CHECK_MOTION_CHANGE)
+
+}  // namespace kvd::segments
