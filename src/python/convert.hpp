@@ -8,9 +8,12 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
+#include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/float_kernel.hpp"
+#include "kvd/segments/segment_io.hpp"
 
 namespace kvd::segments {
 class Cylindrical_bsp;
@@ -69,5 +72,20 @@ void bind_paper_segments(py::module_& m);
 // A segment tree as build_segments returns it: cuts by kind, nodes, leaves,
 // height, its text and SHA-256 (segment_bindings.cpp).
 py::dict segment_tree_dict(const segments::Cylindrical_bsp& b);
+
+// A flight-plan change's instant `at` and motion (SEGMENT_FORMAT.md's motion
+// object, numbers as text, int or Fraction), for a run now at `now`:
+// ValueError when `at` is before now, SceneError naming the place of a bad
+// motion.
+template <class K>
+std::pair<typename K::Time, segments::Segment_motion> motion_change(const K& k, const typename K::Time& now,
+                                                                    const py::handle& motion, const py::handle& at) {
+  const auto t = k.time(from_rational<typename K::FT>(to_mpq(at)));
+  if (k.compare(t, now) < 0)
+    throw py::value_error("set_motion: at = " + k.to_string(t) + " is before the run's now, " + k.to_string(now));
+  const py::object text = py::module_::import("json").attr("dumps")(
+      motion, py::arg("default") = py::module_::import("builtins").attr("str"));
+  return {t, segments::read_segment_motion(text.cast<std::string>(), "set_motion")};
+}
 
 }  // namespace kvd::python

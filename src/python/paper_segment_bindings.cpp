@@ -26,25 +26,25 @@ public:
   py::object advance() {
     const auto next = run_.next_event_time();
     if (!next || failures_ >= max_events_ || (until_ && k_.compare(*next, *until_) > 0)) return py::none();
-    const auto b = run_.advance();
-    failures_ += b.failing.size();
-    py::dict d;
-    put_time(d, k_, b.time, "time");
-    py::list failing;
-    for (const auto& id : b.failing)
-      failing.append(py::make_tuple(segments::aeg_certificate_kind_names[static_cast<int>(id.kind)],
-                                    segments::aeg_certificate_subject(id)));
-    d["failing"] = failing;
-    d["changed"] = b.changed;
-    d["certificates"] = b.certificates;
-    d["replays"] = b.replays;
-    d["nodes_rebuilt"] = b.nodes_rebuilt;
-    d["flipped_in_place"] = b.flipped_in_place;
-    d["nodes_edited"] = b.nodes_edited;
-    d["update_seconds"] = b.update_seconds;
-    d["structure_hash"] = tree::sha256_hex(run_.tree().text());
-    batches_.push_back(d);
-    return d;
+    batches_.push_back(batch(run_.advance()));
+    return batches_.back();
+  }
+  std::size_t advance_to(const py::handle& t) {
+    std::size_t n = 0;
+    for (const auto& b : run_.advance_to(Exact_time(to_mpq(t)))) {
+      batches_.push_back(batch(b));
+      ++n;
+    }
+    return n;
+  }
+  // A flight-plan change at `at`, after the batches up to it: the batch of
+  // the certificates it fails at once (failing empty when none).
+  py::dict set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) {
+    const auto m = motion_change(k_, run_.now(), motion, at).second;
+    advance_to(at);
+    const auto b = run_.set_motion(segment, m);
+    ++motion_changes_;
+    return batch(b, false);
   }
   py::list events() const {
     py::list out;
@@ -68,6 +68,7 @@ public:
     py::dict d;
     d["batches"] = batches_.size();
     d["failures"] = failures_;
+    d["motion_changes"] = motion_changes_;
     d["certificates"] = run_.certificates();
     d["validations"] = run_.validations();
     d["validation_failures"] = run_.validation_failures();
@@ -75,9 +76,31 @@ public:
   }
 
 private:
+  // A batch as a dict; an event's is kept in `events`.
+  py::dict batch(const segments::Aeg_kinetic_bsp<Exact_kernel>::Batch& b, bool event = true) {
+    if (event) failures_ += b.failing.size();
+    py::dict d;
+    put_time(d, k_, b.time, "time");
+    py::list failing;
+    for (const auto& id : b.failing)
+      failing.append(py::make_tuple(segments::aeg_certificate_kind_names[static_cast<int>(id.kind)],
+                                    segments::aeg_certificate_subject(id)));
+    d["failing"] = failing;
+    d["changed"] = b.changed;
+    d["certificates"] = b.certificates;
+    d["certificates_made"] = b.certificates_made;
+    d["replays"] = b.replays;
+    d["nodes_rebuilt"] = b.nodes_rebuilt;
+    d["flipped_in_place"] = b.flipped_in_place;
+    d["nodes_edited"] = b.nodes_edited;
+    d["update_seconds"] = b.update_seconds;
+    d["structure_hash"] = tree::sha256_hex(run_.tree().text());
+    return d;
+  }
+
   const Exact_kernel k_;
   segments::Aeg_kinetic_bsp<Exact_kernel> run_;
-  std::size_t max_events_, failures_ = 0;
+  std::size_t max_events_, failures_ = 0, motion_changes_ = 0;
   std::optional<Exact_time> until_;
   std::vector<py::dict> batches_;
 };
@@ -93,8 +116,16 @@ void bind_paper_segments(py::module_& m) {
            py::arg("events") = 100, py::arg("validate") = true, py::arg("until") = py::none())
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
-           "replays, nodes_rebuilt, flipped_in_place, nodes_edited, update_seconds, structure_hash), or None when nothing fails any more,\n"
-           "`events` failures were processed, or the next batch is after `until`.")
+           "certificates_made, replays, nodes_rebuilt, flipped_in_place, nodes_edited, update_seconds,\n"
+           "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
+           "next batch is after `until`.")
+      .def("advance_to", &Paper_segments::advance_to, py::arg("t"),
+           "Processes every batch at a time <= t and moves to t; how many.")
+      .def("set_motion", &Paper_segments::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
+           "A flight-plan change, as KineticSegments.set_motion takes it: the batches up to `at` first, then\n"
+           "the segment moves by `motion` from there on, kept where it is at `at`. Only the certificates naming\n"
+           "the segment are made again (Lemma 3.1); those the new motion fails at once are updated as a batch,\n"
+           "returned in the form advance() gives (failing empty when none failed).")
       .def_property_readonly("events", &Paper_segments::events, "The batches processed so far.")
       .def_property_readonly("now", &Paper_segments::now)
       .def_property_readonly("next_event_time", &Paper_segments::next_event_time)

@@ -92,12 +92,7 @@ public:
   // A flight-plan change at `at` (after the batches up to it): the motion
   // in the file format's forms, its numbers as text, int or Fraction.
   bool set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) override {
-    const auto t = k_.time(from_rational<typename K::FT>(to_mpq(at)));
-    if (k_.compare(t, kin_.now()) < 0)
-      throw py::value_error("set_motion: at = " + k_.to_string(t) + " is before the run's now, " +
-                            k_.to_string(kin_.now()));
-    const py::object text = py::module_::import("json").attr("dumps")(motion, py::arg("default") = py::module_::import("builtins").attr("str"));
-    const segments::Segment_motion m = segments::read_segment_motion(text.cast<std::string>(), "set_motion");
+    const auto m = motion_change(k_, kin_.now(), motion, at).second;
     advance_to(at);
     const bool changed = kin_.set_motion(segment, m);
     ++motion_changes_;

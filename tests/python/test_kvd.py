@@ -210,31 +210,39 @@ def test_segment_bad_input_raises_value_errors():
         kvd.KineticSegments(s, update="reinsert")
 
 
-def test_segment_set_motion_stops_the_sinker():
+def changed(result):
+    # KineticSegments.set_motion says whether the tree changed; PaperSegments
+    # returns the batch of the certificates it failed at once.
+    return result if isinstance(result, bool) else result["changed"]
+
+
+@pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
+def test_segment_set_motion_stops_the_sinker(run):
     # over-endpoint.json: the sinker, from (3, 4) to (6, 1), moves down by t
     # and passes over the floor's endpoint (4, 0) at t = 3 (an edge event).
     # Stopped at 1/2 (a constant translation, where it is then), nothing fails
     # any more and the tree stays the one at 1/2.
     s = kvd.load_segments(segment_file("over-endpoint.json"))
-    moving = kvd.KineticSegments(s)
+    moving = run(s)
     assert [b["time"] for b in iter(moving.advance, None)] == ["3"]
-    k = kvd.KineticSegments(s)
+    k = run(s)
     at = Fraction(1, 2)
-    assert not k.set_motion(1, {"translation": [0, Fraction(-1, 2)]}, at)
+    assert not changed(k.set_motion(1, {"translation": [0, Fraction(-1, 2)]}, at))
     assert k.now["time"] == "1/2"
     assert k.advance() is None
     assert k.tree["tree"] == kvd.build_segments(s, at)["tree"]
     assert k.summary["motion_changes"] == 1 and k.summary["validation_failures"] == []
     # Moving down again from 3/4 (by 1/4 - t), it meets the endpoint a
     # quarter later than it would have.
-    assert not k.set_motion(1, {"translation": ["0", ["1/4", "-1"]]}, Fraction(3, 4))
+    assert not changed(k.set_motion(1, {"translation": ["0", ["1/4", "-1"]]}, Fraction(3, 4)))
     assert [b["time"] for b in iter(k.advance, None)] == ["13/4"]
     assert k.summary["motion_changes"] == 2 and k.summary["validation_failures"] == []
 
 
-def test_segment_set_motion_rejects_bad_motions():
+@pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
+def test_segment_set_motion_rejects_bad_motions(run):
     s = kvd.load_segments(segment_file("over-endpoint.json"))
-    k = kvd.KineticSegments(s)
+    k = run(s)
     with pytest.raises(ValueError, match="no segment 5"):
         k.set_motion(5, None, Fraction(1, 2))
     with pytest.raises(ValueError, match="set_motion: /translation: "):
