@@ -26,26 +26,43 @@ std::optional<std::array<std::vector<filter::Interval>, 3>> enclose(const std::a
 
 }  // namespace
 
-Segment_filter::Segment_filter(const std::vector<std::array<Poly<mpq_class>, 3>>& endpoints) : at_(endpoints.size()) {
+Segment_filter::Segment_filter(const std::vector<std::array<Poly<mpq_class>, 3>>& endpoints)
+    : evaluated_(endpoints.size(), 0), enclosed_(endpoints.size(), false), at_(endpoints.size()) {
   for (const auto& p : endpoints) coefficients_.push_back(enclose(p));
 }
 
-void Segment_filter::refresh(std::size_t e, const std::array<Poly<mpq_class>, 3>& p) { coefficients_[e] = enclose(p); }
+void Segment_filter::refresh(std::size_t e, const std::array<Poly<mpq_class>, 3>& p) {
+  coefficients_[e] = enclose(p);
+  evaluated_[e] = 0;
+}
+
+bool Segment_filter::at(std::size_t e) const {
+  if (evaluated_[e] == epoch_) return enclosed_[e];
+  evaluated_[e] = epoch_;
+  enclosed_[e] = false;
+  if (!coefficients_[e]) return false;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const auto v = filter::evaluate((*coefficients_[e])[c], *ti_);
+    if (!v || !(std::fabs(v->lower()) <= max_coordinate && std::fabs(v->upper()) <= max_coordinate)) return false;
+    at_[e][c] = *v;
+  }
+  enclosed_[e] = true;
+  return true;
+}
 
 int Segment_filter::sign(const Segment_certificate_key& key, const Exact_time& t) const {
-  const std::optional<filter::Interval> ti = filter::enclose(t);  // GMP converts: outside the rounding scope
-  if (!ti) return 0;
+  if (epoch_ == 0 || t.lower() != lo_ || t.upper() != hi_) {
+    ti_ = filter::enclose(t);  // GMP converts (and may refine t): outside the rounding scope
+    lo_ = t.lower();
+    hi_ = t.upper();
+    ++epoch_;
+  }
+  if (!ti_) return 0;
   const std::vector<std::size_t> segments = named_segments(key);
   const filter::Rounding_scope rounding;
   for (const std::size_t s : segments)
-    for (const std::size_t e : {2 * s, 2 * s + 1}) {
-      if (!coefficients_[e]) return 0;
-      for (std::size_t c = 0; c < 3; ++c) {
-        const auto v = filter::evaluate((*coefficients_[e])[c], *ti);
-        if (!v || !(std::fabs(v->lower()) <= max_coordinate && std::fabs(v->upper()) <= max_coordinate)) return 0;
-        at_[e][c] = *v;
-      }
-    }
+    for (const std::size_t e : {2 * s, 2 * s + 1})
+      if (!at(e)) return 0;
   int sign = 1;
   for (const filter::Interval& f : factors_of(key, View<filter::Interval>(at_, nullptr))) {
     const int s = filter::sign(f);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -27,8 +28,22 @@ public:
 
 private:
   using Coefficients = std::array<std::vector<filter::Interval>, 3>;
+  // Whether at_[e] holds endpoint e at the instant of ti_ (evaluated when
+  // first asked there, as a sign names it); false when it has no
+  // enclosure there.
+  bool at(std::size_t e) const;
+
   std::vector<std::optional<Coefficients>> coefficients_;  // none: a coefficient beyond filter::max_input
-  mutable std::vector<std::array<filter::Interval, 3>> at_;  // the named endpoints at the instant asked
+  // The last instant asked, by its isolating interval, and its enclosure:
+  // a construction asks thousands of signs at one instant, and the
+  // enclosure and the endpoints' values there are computed once for them.
+  // A refined interval is another key; the old enclosure stayed valid.
+  mutable mpq_class lo_, hi_;
+  mutable std::optional<filter::Interval> ti_;
+  mutable std::uint64_t epoch_ = 0;                          // of ti_, counted from 1
+  mutable std::vector<std::uint64_t> evaluated_;             // per endpoint: the epoch at_ holds, 0 none
+  mutable std::vector<bool> enclosed_;                       // per endpoint: whether it had an enclosure then
+  mutable std::vector<std::array<filter::Interval, 3>> at_;  // the endpoints at that instant
 };
 
 }  // namespace kvd::segments::detail
