@@ -39,7 +39,9 @@ std::vector<std::size_t> Subtree_fit<K>::set_aside(std::size_t v, std::size_t r)
     aside.cell = tree_.nodes[v].cell;
     const std::size_t m = place_node(tree_, &log_, aside);
     move_node(v, m);
+    // m may be a slot freed earlier with a mark of its own: it takes v's.
     if (dirty_.count(v)) dirty_.insert(m);
+    else dirty_.erase(m);
     // The segment had no step at v (it would have cut v): its new ones go.
     auto& log = log_.at[m];
     const auto [from, to] = rank_block(log, scene_.rank, r);
