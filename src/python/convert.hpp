@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/float_kernel.hpp"
+#include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/segments/segment_io.hpp"
 
 namespace kvd::segments {
@@ -73,19 +75,26 @@ void bind_paper_segments(py::module_& m);
 // height, its text and SHA-256 (segment_bindings.cpp).
 py::dict segment_tree_dict(const segments::Cylindrical_bsp& b);
 
-// A flight-plan change's instant `at` and motion (SEGMENT_FORMAT.md's motion
-// object, numbers as text, int or Fraction), for a run now at `now`:
-// ValueError when `at` is before now, SceneError naming the place of a bad
-// motion.
+// A flight-plan change of segment `segment` of `scene` (the run's scene,
+// with the changes made so far) at `at`, for a run now at `now`: the motion
+// (SEGMENT_FORMAT.md's motion object, numbers as text, int or Fraction),
+// checked at `at` before the run moves there, so that a change refused
+// leaves the run where it was. ValueError when `at` is before now or the
+// motion does not keep the segment where it is then, SceneError naming the
+// place of a bad motion.
 template <class K>
-std::pair<typename K::Time, segments::Segment_motion> motion_change(const K& k, const typename K::Time& now,
-                                                                    const py::handle& motion, const py::handle& at) {
+segments::Segment_motion motion_change(const K& k, const typename K::Time& now, const segments::Segment_scene& scene,
+                                       std::size_t segment, const py::handle& motion, const py::handle& at) {
   const auto t = k.time(from_rational<typename K::FT>(to_mpq(at)));
   if (k.compare(t, now) < 0)
     throw py::value_error("set_motion: at = " + k.to_string(t) + " is before the run's now, " + k.to_string(now));
   const py::object text = py::module_::import("json").attr("dumps")(
       motion, py::arg("default") = py::module_::import("builtins").attr("str"));
-  return {t, segments::read_segment_motion(text.cast<std::string>(), "set_motion")};
+  segments::Segment_motion m = segments::read_segment_motion(text.cast<std::string>(), "set_motion");
+  std::optional<typename K::Time> end;
+  if (scene.end) end = k.time(from_rational<typename K::FT>(*scene.end));
+  segments::check_motion_change(k, scene, segment, m, t, end);
+  return m;
 }
 
 }  // namespace kvd::python

@@ -18,6 +18,17 @@ namespace kvd::segments {
 
 namespace {
 
+// The predicates' recorder for a scope, taken off again however it ends
+// (the recorder refers to the scope's locals).
+template <class K>
+struct Recording {
+  const Segment_predicates<K>& pred;
+  Recording(const Segment_predicates<K>& p, typename Segment_predicates<K>::Recorder r) : pred(p) { pred.record(std::move(r)); }
+  ~Recording() { pred.record({}); }
+  Recording(const Recording&) = delete;
+  Recording& operator=(const Recording&) = delete;
+};
+
 // Failures in the order Batch::failing keeps.
 bool before(const Aeg_certificate_id& a, const Aeg_certificate_id& b) {
   return std::tie(a.kind, a.index, a.cell.left, a.cell.right, a.cell.floor, a.cell.roof) <
@@ -115,9 +126,10 @@ void Aeg_kinetic_bsp<K>::ask(const Certificate& c, std::size_t index) {
 template <class K>
 std::vector<int> Aeg_kinetic_bsp<K>::signs(const Certificate& c, std::size_t index) {
   std::vector<int> out;
-  pred_.record([&](const Segment_certificate_key&, std::vector<P>&&, std::int32_t, int sign) { out.push_back(sign); });
+  const Recording recording(pred_, [&](const Segment_certificate_key&, std::vector<P>&&, std::int32_t, int sign) {
+    out.push_back(sign);
+  });
   ask(c, index);
-  pred_.record({});
   return out;
 }
 
@@ -126,11 +138,12 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, std::size_t index) {
   // Every sign decided by arithmetic hands over its polynomials (identities
   // have none: they never change).
   polys_.clear();
-  pred_.record([this](const Segment_certificate_key&, std::vector<P>&& polys, std::int32_t, int) {
-    for (P& q : polys) polys_.push_back(std::move(q));
-  });
-  ask(c, index);
-  pred_.record({});
+  {
+    const Recording recording(pred_, [this](const Segment_certificate_key&, std::vector<P>&& polys, std::int32_t, int) {
+      for (P& q : polys) polys_.push_back(std::move(q));
+    });
+    ask(c, index);
+  }
   ++made_;
   c.version = ++versions_;
   c.fails = roots_.first_root(k_, polys_, now_);
@@ -587,6 +600,8 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
     else failing_transient.insert(e.index);
   }
   std::sort(b.failing.begin(), b.failing.end(), before);
+  std::map<std::size_t, std::uint64_t> was;  // the failing endpoints' certificates, by version
+  for (const std::size_t e : failing_endpoints_) was.emplace(e, endpoint_[e].version);
   // A turning segment's endpoints have their far side changed: they leave
   // their leaves' lists now, and are found again from the root after the
   // update, whether the flip is done in place or replayed.
@@ -618,6 +633,14 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
     make_flip(s);
     for (const std::size_t e : {2 * s, 2 * s + 1}) make_endpoint(e);
   }
+  // A failing endpoint certificate left as it was (its leaf neither gone
+  // nor given a new cell) is found again from the root: kept, its old
+  // failure would come back.
+  for (const auto& [e, version] : was)
+    if (endpoint_[e].version == version) {
+      detach(e);
+      make_endpoint(e);
+    }
   failing_endpoints_.clear();
 }
 

@@ -14,19 +14,23 @@ template <class K>
 void check_motion_change(const K& k, const Segment_scene& scene, std::size_t segment, const Segment_motion& motion,
                          const typename K::Time& now, const std::optional<typename K::Time>& end) {
   if (segment >= scene.segments.size()) throw std::invalid_argument("set_motion: no segment " + std::to_string(segment));
-  Segment_scene changed = scene;
-  changed.segments[segment].motion = motion;
+  // The segment alone, before and after: a copy of the scene would cost
+  // its size, and the change the segment's certificates.
+  Segment_scene was, is;
+  was.segments = {scene.segments[segment]};
+  is.segments = was.segments;
+  is.segments[0].motion = motion;
   using FT = typename K::FT;
   using P = typename K::Poly;
-  for (const std::size_t e : {2 * segment, 2 * segment + 1}) {
-    const auto a = scene.endpoint(e), b = changed.endpoint(e);
+  for (const std::size_t e : {std::size_t{0}, std::size_t{1}}) {
+    const auto a = was.endpoint(e), b = is.endpoint(e);
     const P w = poly_from_rational<FT>(b[2]);
     if (k.sign_at(w, now) == 0) throw std::invalid_argument("set_motion: W is zero now");
     if (const auto r = k.next_root(w, now); r && !(end && k.compare(*r, *end) > 0))
       throw std::invalid_argument("set_motion: W vanishes at t = " + k.to_string(*r) + ", inside the span");
     for (const std::size_t c : {0, 1})
       if (k.sign_at(poly_from_rational<FT>(a[c] * b[2] - b[c] * a[2]), now) != 0)
-        throw std::invalid_argument("set_motion: the new motion moves endpoint " + std::to_string(e % 2) +
+        throw std::invalid_argument("set_motion: the new motion moves endpoint " + std::to_string(e) +
                                     " away from where it is now");
   }
 }

@@ -252,6 +252,9 @@ def test_segment_set_motion_rejects_bad_motions(run):
     # Back to its rest position at 1/2: a jump.
     with pytest.raises(ValueError, match="away from where it is now"):
         k.set_motion(1, None, Fraction(1, 2))
+    # A change refused leaves the run where it was.
+    assert k.now["time"] == "0" and k.summary["motion_changes"] == 0
+    k.advance_to(Fraction(1, 2))
     with pytest.raises(ValueError, match="before the run's now"):
         k.set_motion(1, {"translation": [0, Fraction(-1, 4)]}, Fraction(1, 4))
     assert k.summary["motion_changes"] == 0
