@@ -610,6 +610,13 @@ TEST_CASE("kvd simulate --certificates paper runs a segment scene on the paper's
         std::string::npos);
   CHECK(json.out.find(R"("validations": 1, "validation_failures": 0)") != std::string::npos);
   CHECK(json.out.find(R"("failing": [{"kind": "endpoint", "of": "s0.1"}], "changed": true)") != std::string::npos);
+  // The certificates made again in the batch, the failing one among them,
+  // and their median, mean and max over the run (here the same).
+  const std::size_t made_at = json.out.find(R"("nodes_edited": 0, "certificates_made": )");
+  REQUIRE(made_at != std::string::npos);
+  const int made = std::stoi(json.out.substr(made_at + 40));
+  CHECK(made >= 1);
+  CHECK(json.out.find(R"(, "max": )" + std::to_string(made) + "}") != std::string::npos);
   // A flip fails the segment's certificate and the cell between its endpoints.
   CHECK(run("simulate " + dir + "rotating-10.json --certificates paper --list --events 2").out.find(
             "transient between s1.0 and s1.1; flip s1; tree changed") != std::string::npos);

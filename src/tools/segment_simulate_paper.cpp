@@ -65,7 +65,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               {"nodes_rebuilt_median", median(made)}, {"replays", replays},
               {"flips_in_place", flipped},
               {"certificates_made", {{"mean", decimal(fixed(certified_mean, 2))}, {"median", median(certified)},
-                                     {"max", certified_max}}}};
+                                     {"max", static_cast<std::size_t>(certified_max)}}}};
     if (o.list) {
       Json list = Json::array();
       for (const auto& b : batches) {
