@@ -17,7 +17,7 @@ namespace {
 class Paper_segments {
 public:
   Paper_segments(const segments::Segment_scene& s, std::size_t events, bool validate, const py::handle& until)
-      : scene_(s), run_(k_, s, validate), max_events_(events) {
+      : run_(k_, s, validate), max_events_(events) {
     if (!until.is_none()) until_ = Exact_time(to_mpq(until));
   }
 
@@ -40,10 +40,9 @@ public:
   // A flight-plan change at `at`, after the batches up to it: the batch of
   // the certificates it fails at once (failing empty when none).
   py::dict set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) {
-    const auto m = motion_change(k_, run_.now(), scene_, segment, motion, at);
+    const auto m = motion_change(k_, run_.now(), run_.scene(), segment, motion, at);
     advance_to(at);
     const auto b = run_.set_motion(segment, m);
-    scene_.segments[segment].motion = m;
     ++motion_changes_;
     return batch(b, false);
   }
@@ -100,7 +99,6 @@ private:
   }
 
   const Exact_kernel k_;
-  segments::Segment_scene scene_;  // with the flight-plan changes made
   segments::Aeg_kinetic_bsp<Exact_kernel> run_;
   std::size_t max_events_, failures_ = 0, motion_changes_ = 0;
   std::optional<Exact_time> until_;

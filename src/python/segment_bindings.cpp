@@ -68,7 +68,7 @@ public:
   using Kinetic = segments::Kinetic_segment_bsp<K>;
   Segment_kinetic_of(const K& k, const Segment_scene& s, std::size_t events, bool validate,
                      segments::Segment_update update, const std::optional<mpq_class>& until)
-      : k_(k), scene_(s), kin_(k_, s, validate, update), max_events_(events) {
+      : k_(k), kin_(k_, s, validate, update), max_events_(events) {
     if (until) until_ = k_.time(from_rational<typename K::FT>(*until));
   }
 
@@ -92,10 +92,9 @@ public:
   // A flight-plan change at `at` (after the batches up to it): the motion
   // in the file format's forms, its numbers as text, int or Fraction.
   bool set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) override {
-    const auto m = motion_change(k_, kin_.now(), scene_, segment, motion, at);
+    const auto m = motion_change(k_, kin_.now(), kin_.scene(), segment, motion, at);
     advance_to(at);
     const bool changed = kin_.set_motion(segment, m);
-    scene_.segments[segment].motion = m;
     ++motion_changes_;
     return changed;
   }
@@ -155,7 +154,6 @@ private:
   }
 
   K k_;
-  Segment_scene scene_;  // with the flight-plan changes made
   Kinetic kin_;
   std::size_t max_events_, failures_ = 0, motion_changes_ = 0;
   std::optional<typename K::Time> until_;

@@ -7,6 +7,7 @@
 #include <set>
 #include <tuple>
 
+#include "kvd/detail/kinetic/batches_until.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
 #include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/detail/segments/subtree_fit.hpp"
@@ -184,10 +185,15 @@ void Aeg_kinetic_bsp<K>::index(const Certificate& c, std::size_t index) {
 template <class K>
 void Aeg_kinetic_bsp<K>::enter(const Certificate& c, std::size_t index) {
   const Held h{c.id.kind, index};
-  const auto add = [&](std::size_t s) {
+  named_by(c, index, [&](std::size_t s) {
     by_segment_[s].push_back(h);
     ++indexed_;
-  };
+  });
+}
+
+template <class K>
+template <class F>
+void Aeg_kinetic_bsp<K>::named_by(const Certificate& c, std::size_t index, F add) const {
   switch (c.id.kind) {
     case Aeg_certificate_kind::transient: {
       const Cell& w = c.id.cell;
@@ -227,15 +233,7 @@ std::vector<typename Aeg_kinetic_bsp<K>::Held> Aeg_kinetic_bsp<K>::naming(std::s
     const Certificate& c = held(h);
     if (c.version == 0) return false;
     bool found = false;
-    const auto is = [&](std::size_t t) { found = found || t == s; };
-    const bool cell = h.kind == Aeg_certificate_kind::transient;
-    const Cell& w = cell ? c.id.cell : c.near;
-    for (const auto& p : {w.left, w.right})
-      if (p && cell) segments_of(*p, is);
-    if (h.kind != Aeg_certificate_kind::flip)
-      for (const auto& t : {w.floor, w.roof})
-        if (t) is(*t);
-    if (!cell) is(h.kind == Aeg_certificate_kind::endpoint ? h.index / 2 : h.index);
+    named_by(c, h.index, [&](std::size_t t) { found = found || t == s; });
     return found;
   };
   std::vector<Held>& entries = by_segment_[s];
@@ -646,11 +644,7 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
 
 template <class K>
 std::vector<typename Aeg_kinetic_bsp<K>::Batch> Aeg_kinetic_bsp<K>::advance_to(const Time& t) {
-  std::vector<Batch> batches;
-  while (const auto next = next_event_time()) {
-    if (k_.compare(*next, t) > 0) break;
-    batches.push_back(advance());
-  }
+  std::vector<Batch> batches = kinetic::batches_until(*this, k_, t);
   // No certificate fails in (now, t]: their failure times stay.
   if (k_.compare(now_, t) < 0) now_ = t;
   return batches;
@@ -674,16 +668,9 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::set_motion(std::size_t se
   for (std::size_t i = 0; i < named.size(); ++i) {
     const Held& h = named[i];
     Certificate& c = held(h);
-    if (signs(c, h.index) != was[i]) {
-      failing.push_back({now_, h.kind, h.index, c.version});
-    } else if (h.kind == Aeg_certificate_kind::endpoint) {
-      detach(h.index);
-      failing_endpoints_.insert(h.index);
-      make_endpoint(h.index, leaf_[h.index]);
-      failing_endpoints_.erase(h.index);
-    } else {
-      make(c, h.index);
-    }
+    // Same signs: the tree stays, and an endpoint's leaf with it.
+    if (signs(c, h.index) != was[i]) failing.push_back({now_, h.kind, h.index, c.version});
+    else make(c, h.index);
   }
   update(failing, b);
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/kinetic/batches_until.hpp"
 #include "kvd/detail/kinetic/validator.hpp"
 #include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/detail/segments/subtree_fit.hpp"
@@ -110,11 +111,7 @@ typename Segment_predicates<K>::Recorder Kinetic_segment_bsp<K>::recorder() {
 
 template <class K>
 std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::advance_to(const Time& t) {
-  std::vector<Batch> batches;
-  while (const auto next = next_event_time()) {
-    if (k_.compare(*next, t) > 0) break;
-    batches.push_back(advance());
-  }
+  std::vector<Batch> batches = kinetic::batches_until(*this, k_, t);
   // No certificate fails in (now, t]: their failure times stay.
   if (k_.compare(now_, t) < 0) now_ = t;
   return batches;

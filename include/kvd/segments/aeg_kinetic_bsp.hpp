@@ -142,6 +142,8 @@ public:
   // build, described, and how many ran.
   const std::vector<std::string>& validation_failures() const { return failures_; }
   std::size_t validations() const { return validations_; }
+  // The scene with the flight-plan changes made.
+  const Segment_scene& scene() const { return scene_; }
 
 private:
   using P = typename K::Poly;
@@ -186,6 +188,10 @@ private:
   // the index made again when it has grown too large.
   void index(const Certificate& c, std::size_t index);
   void enter(const Certificate& c, std::size_t index);
+  // add(s) for each segment certificate c (of node, endpoint or segment
+  // `index`) names, a segment maybe more than once.
+  template <class F>
+  void named_by(const Certificate& c, std::size_t index, F add) const;
   // The certificates in force naming segment s (entries gone since dropped).
   std::vector<Held> naming(std::size_t s);
   Certificate& held(const Held& h);
@@ -263,7 +269,7 @@ private:
   // During an update: the certificates of the transient nodes of the
   // replayed subtrees (failing ones left out), and the failing endpoints.
   std::map<Cell, Certificate, Cell_less> spare_;
-  std::set<std::size_t> failing_endpoints_;  // made again, not kept: failing, or named by a flight-plan change
+  std::set<std::size_t> failing_endpoints_;  // failing: made again, not kept
   std::vector<Certificate> endpoint_, flip_;
   std::vector<std::size_t> leaf_;  // per endpoint: the leaf beside it (aeg_neighbours)
   std::map<std::size_t, std::vector<std::size_t>> beside_;  // per leaf slot: the endpoints it is beside
