@@ -11,6 +11,7 @@
 #include <set>
 
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/segments/reroute.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 
@@ -89,56 +90,24 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     else if (changing(top) != segment) return std::nullopt;
   }
 
-  // The segment's steps below u before: its block in the logs of the nodes
-  // its crossing walk reaches through the nodes above the frontier.
-  std::map<std::size_t, std::vector<Arrival>> before, after;
-  const auto mine = [&](std::size_t n) {
-    const auto& log = log_.at[n];
-    const auto [from, to] = rank_block(log, rank, r);
-    return std::vector<Arrival>(log.begin() + static_cast<std::ptrdiff_t>(from), log.begin() + static_cast<std::ptrdiff_t>(to));
-  };
-  std::vector<std::size_t> stack;
-  for (const std::int32_t c : node(u).child) stack.push_back(static_cast<std::size_t>(c));
-  while (!stack.empty()) {
-    const std::size_t n = stack.back();
-    stack.pop_back();
-    std::vector<Arrival> steps = mine(n);
-    if (steps.empty()) continue;
-    before[n] = std::move(steps);
-    if (!frontier(n))
-      for (const std::int32_t c : node(n).child) stack.push_back(static_cast<std::size_t>(c));
-  }
-
   // Decided again from u: the certificates at u, above the frontier, and
-  // above u for crossings found anew, are recorded.
+  // above u for crossings found anew, are recorded. Above the frontier the
+  // cut stays; a key the segment's steps decided there before and do not
+  // now goes, unless another step decides it (the keys of the whole log,
+  // read once, and only when some key may go).
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
-  builder.reroute(u, mine(u), r, after);
-
-  // The segment's block in every log reached before or after is the new one.
-  std::set<std::size_t> reached;
-  for (const auto& [n, steps] : before) reached.insert(n);
-  for (const auto& [n, steps] : after) reached.insert(n);
-  for (const std::size_t n : reached) {
-    auto& log = log_.at[n];
-    const auto [from, to] = rank_block(log, rank, r);
-    const std::vector<Arrival>&now = after[n], &was_here = before[n];
-    log.erase(log.begin() + static_cast<std::ptrdiff_t>(from), log.begin() + static_cast<std::ptrdiff_t>(to));
-    log.insert(log.begin() + static_cast<std::ptrdiff_t>(from), now.begin(), now.end());
-    if (frontier(n)) {
-      if (was_here != now) replayed.insert(n);
-      continue;
-    }
-    // Above the frontier the cut stays; a key the segment's steps decided
-    // here before and do not now goes, unless another step decides it (the
-    // keys of the whole log, read once, and only when some key may go).
-    const std::vector<Key> new_keys = keys_of(node(n), now);
-    std::optional<std::vector<Key>> all;
-    for (const Key& k : keys_of(node(n), was_here)) {
-      if (has(new_keys, k)) continue;
-      if (!all) all = keys_of(node(n), log);
-      if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
-    }
-  }
+  const std::vector<std::size_t> moved =
+      reroute_segment(builder, tree_, log_, rank, u, r,
+                      [&](std::size_t n, const std::vector<Arrival>& was, const std::vector<Arrival>& now) {
+                        const std::vector<Key> new_keys = keys_of(node(n), now);
+                        std::optional<std::vector<Key>> all;
+                        for (const Key& k : keys_of(node(n), was)) {
+                          if (has(new_keys, k)) continue;
+                          if (!all) all = keys_of(node(n), log_.at[n]);
+                          if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
+                        }
+                      });
+  replayed.insert(moved.begin(), moved.end());
   std::vector<Replay_root> roots;
   for (const std::size_t n : replayed) roots.push_back({n, r});
   return roots;

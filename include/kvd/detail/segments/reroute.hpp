@@ -1,0 +1,32 @@
+// One segment's steps below a node decided again, down to the tree before
+// that segment (proofs/segment-local-update.md, "Frontier replay"). Both
+// kinetic runs use it: Kinetic_segment_bsp when the keys that changed at
+// its topmost failing node are one segment's, Aeg_kinetic_bsp when a lone
+// failing cell's walls are two points inserted by different segments.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "kvd/detail/segments/bsp_builder.hpp"
+
+namespace kvd::segments {
+
+// Called for a node above the frontier whose block of the segment's
+// arrivals was rewritten: the node, the block before and the block after.
+using Reroute_above = std::function<void(std::size_t, const std::vector<Arrival>&, const std::vector<Arrival>&)>;
+
+// The steps of the segment of rank r at u (whose cut is of an earlier rank)
+// decided again from u down to the frontier: the first nodes of rank r or
+// later, which the segment's insertion split (Bsp_builder::reroute). The
+// segment's block in every log its steps reach, before or after, becomes the
+// new one; u's own arrivals stay. Returns the frontier nodes whose block
+// changed, to be made again with the segment's cuts first (Subtree_fit::
+// remake with rank r); the cuts above them stay.
+template <class K>
+std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindrical_bsp& tree, Build_log& log,
+                                         const std::vector<std::size_t>& rank, std::size_t u, std::size_t r,
+                                         const Reroute_above& above);
+
+}  // namespace kvd::segments
