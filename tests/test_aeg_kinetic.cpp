@@ -88,7 +88,7 @@ bool same_log(const Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predicates
 
 // What side_by_side counts.
 struct Compared {
-  std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0, flipped = 0;
+  std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0, flipped = 0, frontier = 0;
   std::array<std::size_t, 3> caught{};  // batches where a certificate of each kind fails
 };
 
@@ -120,6 +120,7 @@ void side_by_side(const std::string& name, const Segment_scene& s, bool neighbou
     c.replays += b.replays;
     c.nodes_rebuilt += b.nodes_rebuilt;
     c.flipped += b.flipped_in_place > 0;
+    c.frontier += b.frontier_replays > 0;
     INFO(name << ": batch at t = " << b.time.to_string());
     CHECK(b.changed);
     CHECK(same_log(run, pred, b.time));
@@ -166,6 +167,8 @@ TEST_CASE("the paper's certificates fail exactly where the tree changes", "[segm
   // The update replays subtrees, not the tree, or turns a flip in place.
   CHECK(c.replays + c.flipped >= c.batches);
   CHECK(c.flipped > 0);
+  // Some batches are walls crossing, remade at the frontier of the later wall's segment.
+  CHECK(c.frontier > 0);
 }
 
 // The same on the 49 valid scenes of seven segments on small integers (seeds
@@ -178,6 +181,38 @@ TEST_CASE("the paper's certificates on small integer scenes", "[segments][aeg]")
     if (const auto s = kvd::test::small_integer_scene(seed))
       side_by_side("seed " + std::to_string(seed), *s, false, c, Exact_time(1));
   CHECK(c.batches > 100);
+  CHECK(c.frontier > 0);
+}
+
+// A vertex event (seed 003, Figure 2, a case of disjoint segments) updated
+// by the frontier replay. s2.1 moves right through s1.0's wall at t = 1,
+// under s1 and above s0; the later s3 crosses every cell between them. Only
+// the transient cell between the two walls fails (s2.1's neighbours change
+// too, which that cell's collapse says). The x order of s2.1 and s1.0 is
+// decided only by s2's steps, at s1.0's cut: they are decided again from
+// there, and exactly the two leaves of B_1 whose arrivals of s2 changed are
+// made again, the one s2.1 leaves (left of s1.0) and the one it enters
+// (below s1), with s3's cuts. Both trees derived by hand.
+TEST_CASE("walls crossing: a vertex event remakes the two leaves of B_{i-1} it moves between", "[segments][aeg]") {
+  const auto s = scene_of({fixed(0, 0, 20, 0), fixed(8, 5, 10, 5), moving(linear(3, 0), linear(2, 0), linear(7, 1), linear(2, 0)),
+                           fixed(1, 1, 15, 1)},
+                          {0, 1, 2, 3}, 0, 2);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, s);
+  CHECK(run.tree().text() == "(V s0.0 . (V s0.1 (E s0 . (V s1.0 (V s2.0 (V s3.0 . (E s3 . .)) (V s2.1 (E s2 (E s3 . .) .) "
+                             "(E s3 . .))) (V s1.1 (E s1 (E s3 . .) .) (V s3.1 (E s3 . .) .)))) .))");
+  REQUIRE(run.next_event_time());
+  const auto b = run.advance();
+  CHECK(b.time.to_string() == "1");
+  CHECK(b.failing == std::vector<Aeg_certificate_id>{transient(Site_point::endpoint(5), Site_point::endpoint(2), 0, {})});
+  CHECK(b.replays == 2);
+  CHECK(b.frontier_replays == 2);
+  CHECK(run.tree().text() == "(V s0.0 . (V s0.1 (E s0 . (V s1.0 (V s2.0 (V s3.0 . (E s3 . .)) (E s2 (E s3 . .) .)) "
+                             "(V s1.1 (E s1 (V s2.1 (E s2 (E s3 . .) .) (E s3 . .)) .) (V s3.1 (E s3 . .) .)))) .))");
+  CHECK(same_log(run, pred, b.time));
+  for (std::size_t e = 0; e < 8; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
 }
 
 // Section 3.1.4's flip, done in place. s0 turns through vertical at t = 1

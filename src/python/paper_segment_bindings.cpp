@@ -90,6 +90,7 @@ private:
     d["certificates"] = b.certificates;
     d["certificates_made"] = b.certificates_made;
     d["replays"] = b.replays;
+    d["frontier_replays"] = b.frontier_replays;
     d["nodes_rebuilt"] = b.nodes_rebuilt;
     d["flipped_in_place"] = b.flipped_in_place;
     d["nodes_edited"] = b.nodes_edited;
@@ -116,7 +117,7 @@ void bind_paper_segments(py::module_& m) {
            py::arg("events") = 100, py::arg("validate") = true, py::arg("until") = py::none())
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
-           "certificates_made, replays, nodes_rebuilt, flipped_in_place, nodes_edited, update_seconds,\n"
+           "certificates_made, replays, frontier_replays, nodes_rebuilt, flipped_in_place, nodes_edited, update_seconds,\n"
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),

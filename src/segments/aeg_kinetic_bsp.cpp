@@ -442,13 +442,15 @@ bool Aeg_kinetic_bsp<K>::crossing(std::size_t i, std::size_t j) const {
 }
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<std::size_t> dirty, Batch& b) {
+bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<std::size_t> dirty, Batch& b) {
   bool changed = false;
   std::vector<Site_point> was, is;
-  // Slots whose certificates went (the endpoints beside them are looked at
-  // again), and nodes kept whole with a new cell.
-  std::vector<std::size_t> gone;
-  std::set<std::size_t> recelled;
+  // The endpoints beside a slot whose certificates went (taken off it at
+  // once: the slot may be used again, and moved, before they are looked at
+  // again), and nodes kept whole with a new cell; each with the node the
+  // endpoints are found again from.
+  std::vector<std::pair<std::size_t, std::size_t>> homeless, recelled;
+  std::size_t from = 0;
   const auto unmake = [&](std::size_t n) {
     if (const auto it = transient_.find(n); it != transient_.end()) {
       spare_.emplace(it->second.id.cell, it->second);
@@ -462,37 +464,50 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
                      {[&](std::size_t n) {
                         unmake(n);
-                        gone.push_back(n);
+                        if (const auto it = beside_.find(n); it != beside_.end()) {
+                          for (const std::size_t e : it->second) homeless.emplace_back(e, from);
+                          beside_.erase(it);
+                        }
                       },
-                      [&](std::size_t from, std::size_t to) {
-                        unmake(from);
-                        const auto it = beside_.find(from);
+                      [&](std::size_t f, std::size_t to) {
+                        unmake(f);
+                        const auto it = beside_.find(f);
                         if (it == beside_.end()) return;
                         const std::vector<std::size_t> moved = std::move(it->second);
                         beside_.erase(it);
                         for (const std::size_t e : moved) leaf_[e] = to;
                         auto& list = beside_[to];
                         list.insert(list.end(), moved.begin(), moved.end());
+                        // Its new slot keeps its own cell, which a remake below a
+                        // frontier node may have made smaller than the old one.
+                        recelled.emplace_back(to, from);
                       },
-                      [&](std::size_t n) { recelled.insert(n); }});
-  for (const std::size_t v : roots) {
+                      [&](std::size_t n) { recelled.emplace_back(n, from); }});
+  // Every subtree is made again before any certificate: an endpoint may move
+  // from one frontier node to another.
+  for (const auto& [v, frontier] : roots) {
+    from = frontier ? 0 : v;
     const std::string text = tree_.text(v);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
     std::vector<Arrival> arrivals = log_.at[v];
-    const std::size_t r = cut_rank(tree_.nodes[v], scene_.rank);
+    std::optional<std::size_t> r = frontier;
     const std::int32_t up = tree_.nodes[v].parent;
-    if (r < scene_.rank.size() && (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < r)) {
-      // v, the first cut of its segment on its path, is made again with its
-      // segment's cuts below it; the old subtrees of later cuts below them
-      // are kept where their arrivals did not change. A crossing of two
-      // later segments found below v is logged at v, and a remake locates it
-      // as logged: one gone now goes (one born now is found below).
+    if (const std::size_t own = cut_rank(tree_.nodes[v], scene_.rank);
+        !r && own < scene_.rank.size() && (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < own))
+      r = own;
+    if (r) {
+      // v, the first cut of its segment on its path (or a frontier node of
+      // segment r), is made again with the segment's cuts below it; the old
+      // subtrees of later cuts below them are kept where their arrivals did
+      // not change. A crossing of two later segments found below v is logged
+      // at v, and a remake locates it as logged: one gone now goes (one born
+      // now is found below).
       std::erase_if(arrivals, [&](const Arrival& a) {
-        return a.kind == Arrival::Kind::intersection && scene_.rank[a.a.a] > r && scene_.rank[a.a.b] > r &&
+        return a.kind == Arrival::Kind::intersection && scene_.rank[a.a.a] > *r && scene_.rank[a.a.b] > *r &&
                !crossing(a.a.a, a.a.b);
       });
-      fit.remake(v, r, arrivals, fit.set_aside(v, r));
+      fit.remake(v, *r, arrivals, fit.set_aside(v, *r));
     } else {
       fit.discard(v, false);
       builder.replay(v, arrivals);
@@ -501,6 +516,9 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
     is.insert(is.end(), y.begin(), y.end());
     changed = changed || tree_.text(v) != text;
     ++b.replays;
+    b.frontier_replays += frontier.has_value();
+  }
+  for (const auto& [v, frontier] : roots) {
     // The certificates of the nodes made, and of the kept ones with a new
     // cell (certify_below keeps a node's certificate only with its cell).
     // The ancestors' transience may change with the point cuts below v:
@@ -515,14 +533,11 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
       else if (!transient_.count(u)) make_transient(u);
       c = u;
     }
-    // The endpoints beside a node gone, and beside a leaf kept whose cell
-    // moved (it may no longer be the leaf beside them), found again from v.
-    for (const std::size_t n : gone) remake_beside(n, v);
-    for (const std::size_t n : recelled)
-      if (tree_.nodes[n].kind == Cut_kind::leaf) remake_beside(n, v);
-    gone.clear();
-    recelled.clear();
   }
+  // The endpoints beside a node gone, and beside a node kept whose cell
+  // moved (it may no longer be the leaf beside them), found again.
+  for (const auto& [e, up] : homeless) make_endpoint(e, up);
+  for (const auto& [n, up] : recelled) remake_beside(n, up);
   spare_.clear();  // cells gone with their nodes
   b.nodes_rebuilt += builder.added();
   // A crossing cut below a root before and nowhere now: its location, logged
@@ -533,7 +548,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<std::size_t>& roots, std::set<
   std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(lost));
   lost.erase(std::unique(lost.begin(), lost.end()), lost.end());
   std::set<std::size_t> above(fit.tops().begin(), fit.tops().end());
-  for (const std::size_t v : roots)
+  for (const auto& [v, frontier] : roots)
     for (std::int32_t a = tree_.nodes[v].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
       a = tree_.nodes[static_cast<std::size_t>(a)].parent;
   unlog_crossings(log_, above, lost);
@@ -560,7 +575,7 @@ std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
 
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
-  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0, 0};
+  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0, 0, 0};
   if (validate_) {
     const Time mid = kinetic::between(k_, now_, b.time);
     ++validations_;
@@ -608,20 +623,24 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
   if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
   } else if (!entries.empty()) {
-    // The subtrees the failing certificates name, none below another, their
-    // ties read at the batch's instant (signs that vanish there cost most:
-    // they are why a flip done in place does not read them).
-    std::set<std::size_t> named;
-    for (const Entry& e : entries)
-      for (const std::size_t r : roots(e)) named.insert(r);
-    std::vector<std::size_t> top;
-    for (const std::size_t r : named) {
-      bool nested = false;
-      for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-        nested = named.count(static_cast<std::size_t>(a)) > 0;
-      if (!nested) top.push_back(r);
+    std::vector<Replay_root> top = walls_crossed(entries);
+    if (top.empty()) {
+      // The subtrees the failing certificates name, none below another, their
+      // ties read at the batch's instant (signs that vanish there cost most:
+      // they are why a flip done in place does not read them).
+      std::set<std::size_t> named;
+      for (const Entry& e : entries)
+        for (const std::size_t r : roots(e)) named.insert(r);
+      for (const std::size_t r : named) {
+        bool nested = false;
+        for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+          nested = named.count(static_cast<std::size_t>(a)) > 0;
+        if (!nested) top.push_back({r, std::nullopt});
+      }
     }
-    std::set<std::size_t> dirty = changing(entries, top);
+    std::vector<std::size_t> nodes;
+    for (const Replay_root& r : top) nodes.push_back(r.node);
+    std::set<std::size_t> dirty = changing(entries, nodes);
     for (const std::size_t v : failing_transient) transient_.erase(v);
     b.changed = replay(top, std::move(dirty), b);
   }
@@ -653,7 +672,7 @@ std::vector<typename Aeg_kinetic_bsp<K>::Batch> Aeg_kinetic_bsp<K>::advance_to(c
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::set_motion(std::size_t segment, const Segment_motion& motion) {
   check_motion_change(k_, scene_, segment, motion, now_, bounded_ ? std::optional<Time>(end_) : std::nullopt);
-  Batch b{now_, {}, false, 0, 0, 0, 0, 0, 0, 0};
+  Batch b{now_, {}, false, 0, 0, 0, 0, 0, 0, 0, 0};
   const auto start = std::chrono::steady_clock::now();
   const std::size_t made = made_;
   // The certificates naming the segment (Lemma 3.1), their signs just after

@@ -45,7 +45,9 @@ std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindri
     const std::vector<Arrival>&now = after[n], &was = before[n];
     at.erase(at.begin() + static_cast<std::ptrdiff_t>(from), at.begin() + static_cast<std::ptrdiff_t>(to));
     at.insert(at.begin() + static_cast<std::ptrdiff_t>(from), now.begin(), now.end());
-    if (!frontier(n)) above(n, was, now);
+    if (!frontier(n)) {
+      if (above) above(n, was, now);
+    }
     else if (was != now) changed.push_back(n);
   }
   return changed;

@@ -29,7 +29,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   std::vector<Run::Batch> batches;
   const std::string stopped = run_batches(run, k, o, batches);
   std::size_t failures = 0, changed = 0, simultaneous = 0;
-  std::size_t replays = 0, flipped = 0;
+  std::size_t replays = 0, frontier = 0, flipped = 0;
   std::array<std::size_t, 3> by_kind{};
   std::vector<double> ms, made, certified;
   for (const Run::Batch& b : batches) {
@@ -37,6 +37,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
     replays += b.replays;
+    frontier += b.frontier_replays;
     flipped += b.flipped_in_place > 0;
     for (const auto& id : b.failing) ++by_kind[static_cast<std::size_t>(id.kind)];
     ms.push_back(b.update_seconds * 1e3);
@@ -62,7 +63,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", run.certificates()},
               {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
                              {"max", decimal(fixed(max, 3))}}},
-              {"nodes_rebuilt_median", median(made)}, {"replays", replays},
+              {"nodes_rebuilt_median", median(made)}, {"replays", replays}, {"frontier_replays", frontier},
               {"flips_in_place", flipped},
               {"certificates_made", {{"mean", decimal(fixed(certified_mean, 2))}, {"median", median(certified)},
                                      {"max", static_cast<std::size_t>(certified_max)}}}};
@@ -73,7 +74,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
         for (const auto& id : b.failing) failing.push_back({{"kind", kind_text(id.kind)}, {"of", segments::aeg_certificate_subject(id)}});
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
                         {"failing", failing}, {"changed", b.changed}, {"certificates", b.certificates},
-                        {"replays", b.replays}, {"nodes_rebuilt", b.nodes_rebuilt},
+                        {"replays", b.replays}, {"frontier_replays", b.frontier_replays}, {"nodes_rebuilt", b.nodes_rebuilt},
                         {"flipped_in_place", b.flipped_in_place}, {"nodes_edited", b.nodes_edited},
                         {"certificates_made", b.certificates_made},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});

@@ -164,8 +164,9 @@ def test_paper_segments_give_the_batches_of_kvd_simulate_certificates_paper(name
     p = kvd.PaperSegments(kvd.load_segments(segment_file(name)), events=30)
     batches = list(iter(p.advance, None))
     assert [(b["time"], [{"kind": kind, "of": of} for kind, of in b["failing"]], b["changed"], b["certificates"],
-             b["replays"], b["nodes_rebuilt"], b["flipped_in_place"], b["nodes_edited"]) for b in batches] == [
-        (t["time"], t["failing"], t["changed"], t["certificates"], t["replays"], t["nodes_rebuilt"],
+             b["replays"], b["frontier_replays"], b["nodes_rebuilt"], b["flipped_in_place"], b["nodes_edited"])
+            for b in batches] == [
+        (t["time"], t["failing"], t["changed"], t["certificates"], t["replays"], t["frontier_replays"], t["nodes_rebuilt"],
          t["flipped_in_place"], t["nodes_edited"]) for t in theirs["batch_list"]]
     assert batches[-1]["structure_hash"] == p.tree["structure_hash"] and p.tree["nodes"] == theirs["nodes"]
     assert p.summary["validations"] == theirs["validations"] > 0 and p.summary["validation_failures"] == []

@@ -61,6 +61,7 @@
 #include "kvd/detail/kinetic/root_cache.hpp"
 #include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
+#include "kvd/detail/segments/reroute.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 #include "kvd/segments/segment_scene.hpp"
 
@@ -94,6 +95,7 @@ public:
     bool changed = false;                     // the tree just after differs from the one before
     std::size_t certificates = 0;             // in force after the batch
     std::size_t replays = 0;                  // subtrees replayed
+    std::size_t frontier_replays = 0;         // of those, below one segment's steps decided again (walls_crossed)
     std::size_t nodes_rebuilt = 0;            // nodes made again
     std::size_t flipped_in_place = 0;         // leaves of B_{i-1} of a flip turned in place, not replayed
     std::size_t nodes_edited = 0;             // nodes whose children, cell or log those edits changed
@@ -241,6 +243,17 @@ private:
   // With `identities` false, a sign zero by identity (`at` a crossing on
   // the cut's segment, for good) is no tie.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
+  // A lone failing transient cell whose walls crossed, roof and floor in
+  // order: the walls' points were put by two insertions, and the only sign
+  // that changed is their x order, which only the later segment's steps
+  // decide (at the earlier point's cuts). When no cut above the frontier
+  // ties with the later point at now but the earlier point's, that
+  // segment's steps are decided again from the topmost of those cuts
+  // (reroute_segment) and the frontier nodes whose arrivals changed, with
+  // the cell's, are returned to be made again, its cuts first
+  // (proofs/segment-local-update.md, "Frontier replay"); else nothing is
+  // done and none returned.
+  std::vector<Replay_root> walls_crossed(const std::vector<Entry>& entries);
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.
   bool crossing(std::size_t i, std::size_t j) const;
@@ -248,7 +261,10 @@ private:
   // old subtrees below each root's cuts whose arrivals did not change and
   // that hold no node of `dirty` (Subtree_fit), and makes the certificates
   // of the nodes made or given a new cell; whether the tree changed.
-  bool replay(const std::vector<std::size_t>& roots, std::set<std::size_t> dirty, Batch& b);
+  // A root with a rank is a frontier node, made again with that segment's
+  // cuts first; the endpoints beside its nodes gone are found again from
+  // the tree's root (they may have moved to another frontier node).
+  bool replay(const std::vector<Replay_root>& roots, std::set<std::size_t> dirty, Batch& b);
   // Makes the certificates of the transient nodes in v's subtree (a node is
   // transient when its parent is a point cut and no point cut lies in its
   // subtree); whether a point cut lies there.

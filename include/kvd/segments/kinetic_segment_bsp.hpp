@@ -61,6 +61,7 @@
 #include "kvd/detail/kinetic/root_cache.hpp"
 #include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
+#include "kvd/detail/segments/reroute.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 
@@ -171,12 +172,7 @@ private:
   using Failing = std::pair<Segment_certificate_key, std::vector<std::int32_t>>;
   // The tree just after now; whether it changed, and the nodes made.
   bool update(const std::vector<Failing>& failing, Batch& b);
-  // A subtree to make again: its root, and for a frontier node the rank of
-  // the segment whose steps changed above it (its cuts come first there).
-  struct Replay_root {
-    std::size_t node;
-    std::optional<std::size_t> rank;
-  };
+  using Replay_root = segments::Replay_root;
   // The frontier replay at the topmost node u (see above; `nodes`: every
   // failing node, sorted): the segment's steps decided again and its logs
   // and certificates above the frontier made anew; returns the frontier

@@ -7,14 +7,22 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "kvd/detail/segments/bsp_builder.hpp"
 
 namespace kvd::segments {
 
-// Called for a node above the frontier whose block of the segment's
-// arrivals was rewritten: the node, the block before and the block after.
+// A subtree to make again: its root, and for a frontier node the rank of
+// the segment whose steps changed above it (its cuts come first there).
+struct Replay_root {
+  std::size_t node;
+  std::optional<std::size_t> rank;
+};
+
+// Called (when set) for a node above the frontier whose block of the
+// segment's arrivals was rewritten: the node, the block before and after.
 using Reroute_above = std::function<void(std::size_t, const std::vector<Arrival>&, const std::vector<Arrival>&)>;
 
 // The steps of the segment of rank r at u (whose cut is of an earlier rank)

@@ -1,0 +1,95 @@
+// A lone failing cell of the run on the paper's certificates whose walls
+// crossed, updated by rerouting the later wall's segment
+// (kvd/segments/aeg_kinetic_bsp.hpp, walls_crossed;
+// proofs/segment-local-update.md, "Frontier replay").
+#include <algorithm>
+#include <set>
+#include <utility>
+
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/segments/aeg_kinetic_bsp.hpp"
+
+namespace kvd::segments {
+
+namespace {
+
+// The place in the priority order of the insertion that puts a point's cut:
+// an endpoint's segment's, the later of a crossing's two.
+std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank) {
+  return p.kind == Site_point::Kind::endpoint ? rank[p.a / 2] : std::max(rank[p.a], rank[p.b]);
+}
+
+}  // namespace
+
+template <class K>
+std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Entry>& entries) {
+  if (entries.size() != 1 || entries.front().kind != Aeg_certificate_kind::transient) return {};
+  const std::size_t cell_node = entries.front().index;
+  const Cell& c = transient_.at(cell_node).id.cell;
+  if (!c.left || !c.right || pred_.compare_x(*c.left, *c.right, now_).sign <= 0) return {};
+  if (c.floor && c.roof)
+    for (const auto& wall : {c.left, c.right})
+      if (pred_.order_at(*wall, *c.roof, *c.floor, now_).sign < 0) return {};
+  const std::vector<std::size_t>& rank = scene_.rank;
+  Site_point later = *c.left, earlier = *c.right;
+  if (point_rank(later, rank) < point_rank(earlier, rank)) std::swap(later, earlier);
+  const std::size_t r = point_rank(later, rank);
+  if (point_rank(earlier, rank) == r) return {};
+  const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
+  // The frontier node above the cell (the later point's cut lies between
+  // them), and no tie at now of the later point with a cut above it but the
+  // earlier point's: a change there may be another event's.
+  std::size_t frontier = cell_node;
+  std::set<std::size_t> path;
+  for (std::int32_t a = parent(cell_node); a >= 0; a = parent(static_cast<std::size_t>(a))) {
+    const auto n = static_cast<std::size_t>(a);
+    const Bsp_node& q = tree_.nodes[n];
+    path.insert(n);
+    if (cut_rank(q, rank) >= r) {
+      frontier = n;
+      continue;
+    }
+    if (point_cut(q) && q.point == earlier) continue;
+    const Segment_sign s = q.kind == Cut_kind::edge ? pred_.side(later, q.segment, now_) : pred_.compare_x(later, q.point, now_);
+    if (s.rule != Segment_rule::value && s.rule != Segment_rule::identity) return {};
+  }
+  // The topmost nodes where the later segment's steps decide the x order of
+  // the two points: cuts of the earlier point above the frontier, found down
+  // the nodes whose log holds a step of that segment.
+  const Segment_certificate_key key{Segment_certificate_key::Kind::x_order, std::min(later, earlier),
+                                    std::max(later, earlier), 0, 0};
+  std::vector<std::size_t> tops, stack{0};
+  std::vector<Segment_certificate_key> keys;
+  while (!stack.empty()) {
+    const std::size_t n = stack.back();
+    stack.pop_back();
+    const Bsp_node& q = tree_.nodes[n];
+    const std::vector<Arrival>& log = log_.at[n];
+    const auto [from, to] = rank_block(log, rank, r);
+    if (cut_rank(q, rank) >= r || from == to) continue;
+    if (point_cut(q) && q.point == earlier) {
+      keys.clear();
+      for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+        tops.push_back(n);
+        continue;
+      }
+    }
+    for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));
+  }
+  if (std::none_of(tops.begin(), tops.end(), [&](std::size_t u) { return path.count(u) > 0; })) return {};
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  if (!validate_) builder.log_traces_only();
+  std::set<std::size_t> replayed{frontier};
+  for (const std::size_t u : tops) {
+    const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, {});
+    replayed.insert(moved.begin(), moved.end());
+  }
+  std::vector<Replay_root> out;
+  for (const std::size_t n : replayed) out.push_back({n, r});
+  return out;
+}
+
+template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::walls_crossed(const std::vector<Entry>&);
+
+}  // namespace kvd::segments
