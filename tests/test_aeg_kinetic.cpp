@@ -215,6 +215,30 @@ TEST_CASE("walls crossing: a vertex event remakes the two leaves of B_{i-1} it m
   CHECK(run.validation_failures().empty());
 }
 
+// The same event with a point beside it: s1.1 has s2.1's abscissa for good
+// (the degenerate family's shared x-coordinates), so both pass s0.0's wall
+// at t = 1. s2 is inserted before s1, and only the cell between s2.1 and
+// s0.0 fails; s1.1's cut lies left of s2.1's (by the perturbation),
+// not on that cell's path. Rerouting s2 alone would leave s1.1 where it
+// was (mutation: a wrong tree and log): the batch is replayed instead, to
+// a fresh build's tree and log.
+TEST_CASE("walls crossing with another point at the same abscissa is replayed", "[segments][aeg]") {
+  const auto s = scene_of({fixed(8, 5, 10, 5), moving(linear(3, 0), linear(2, 0), linear(7, 1), linear(2, 0)),
+                           moving(linear(4, 0), linear(1, 0), linear(7, 1), linear(1, 0))},
+                          {0, 2, 1}, 0, 2);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, s);
+  REQUIRE(run.next_event_time());
+  const auto b = run.advance();
+  CHECK(b.time.to_string() == "1");
+  CHECK(b.failing == std::vector<Aeg_certificate_id>{transient(Site_point::endpoint(5), Site_point::endpoint(0), {}, {})});
+  CHECK(b.frontier_replays == 0);
+  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
+  CHECK(same_log(run, pred, b.time));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
 // Section 3.1.4's flip, done in place. s0 turns through vertical at t = 1
 // about (10, 0), under s3 and crossed by the later s1 and s2; s4 lies beside
 // it. Alone, the flip is done in place: the same tree and log as the run

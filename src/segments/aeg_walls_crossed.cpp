@@ -78,6 +78,22 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
     for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));
   }
   if (std::none_of(tops.begin(), tops.end(), [&](std::size_t u) { return path.count(u) > 0; })) return {};
+  // Another segment's point reaching the earlier point's abscissa now (as
+  // one with the later point's x for good does, in the degenerate family)
+  // changes its own steps there, which no certificate of the set may say:
+  // the later point's wall hides it from the earlier one's.
+  std::set<Site_point> asked{later, earlier};
+  for (const std::size_t u : tops)
+    for (const Arrival& a : log_.at[u]) {
+      if (a.segment == scene_.priority_order[r]) continue;
+      keys.clear();
+      decided_keys(tree_.nodes[u], a, keys);
+      for (const Segment_certificate_key& k : keys) {
+        const Site_point& z = k.p == earlier ? k.q : k.p;
+        if (k.kind != Segment_certificate_key::Kind::x_order || !asked.insert(z).second) continue;
+        if (pred_.compare_x(z, earlier, now_).rule != Segment_rule::value) return {};
+      }
+    }
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   if (!validate_) builder.log_traces_only();
   std::set<std::size_t> replayed{frontier};
