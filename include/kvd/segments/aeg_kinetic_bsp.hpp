@@ -22,8 +22,10 @@
 // the other side of its first, the subtrees beside them change places, and
 // below s_i's edge cut between them every intersection cut swaps its
 // children; the cells, logs and certificates of the nodes touched follow
-// (proofs/segment-certificates.md, "Flips in place"). Any other batch, and a
-// flip that meets anything else at its instant, is replayed:
+// (proofs/segment-certificates.md, "Flips in place"). A lone transient cell
+// whose walls crossed reroutes the later wall's segment (walls_crossed).
+// Any other batch, and a flip that meets anything else at its instant, is
+// replayed:
 //
 // the update is local, though not the paper's surgery (LeftShave, the
 // splits, which are not implemented): each failing certificate names the
@@ -251,8 +253,11 @@ private:
   // segment's steps are decided again from the topmost of those cuts
   // (reroute_segment) and the frontier nodes whose arrivals changed, with
   // the cell's, are returned to be made again, its cuts first
-  // (proofs/segment-local-update.md, "Frontier replay"); else nothing is
-  // done and none returned.
+  // (proofs/segment-local-update.md, "Frontier replay", "Walls crossing on
+  // the paper's set"). Another segment's point tying with the earlier
+  // point at now (one with the later point's abscissa for good, hidden
+  // behind its wall) would change its steps unseen: then, as on a tie, and
+  // when the argument does not apply, nothing is done and none returned.
   std::vector<Replay_root> walls_crossed(const std::vector<Entry>& entries);
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.
