@@ -335,6 +335,7 @@ std::size_t Aeg_kinetic_bsp<K>::subjects(const Entry& e, std::vector<Site_point>
     }
     case Aeg_certificate_kind::endpoint: {
       points.push_back(Site_point::endpoint(e.index));
+      if (collinear(e.index)) segments.push_back(e.index / 2);
       const Cell& c = tree_.nodes[leaf_[e.index]].cell;
       for (const auto& s : {c.floor, c.roof})
         if (s) {
@@ -350,7 +351,19 @@ std::size_t Aeg_kinetic_bsp<K>::subjects(const Entry& e, std::vector<Site_point>
 }
 
 template <class K>
+bool Aeg_kinetic_bsp<K>::collinear(std::size_t e) const {
+  const Cell& c = tree_.nodes[leaf_[e]].cell;
+  const auto on = [&](std::size_t p, std::uint32_t s) {
+    return pred_.side(Site_point::endpoint(p), s, now_).rule != Segment_rule::value;
+  };
+  for (const auto& s : {c.floor, c.roof})
+    if (s && on(e, *s) && on(e ^ 1U, *s)) return true;
+  return false;
+}
+
+template <class K>
 std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
+  if (e.kind == Aeg_certificate_kind::endpoint && collinear(e.index)) return {0};
   if (e.kind == Aeg_certificate_kind::flip) {
     // A replay of the segment's first cuts remakes what lies below them.
     std::vector<std::size_t> out = tops(e.index);

@@ -225,11 +225,19 @@ private:
   // B_{i-1} that one meets lies below another's; else nothing is done and
   // false returned.
   bool flip_in_place(const std::vector<std::size_t>& turning, const std::set<std::size_t>& failing, Batch& b);
+  // Whether endpoint e's segment lies on the line of one of its neighbours
+  // at now (both its endpoints' sides of it vanish there): two parallel
+  // segments passing through each other's line swap their order at every
+  // wall across both, not only near e, and the signs of later segments'
+  // crossings on either against the other change too.
+  bool collinear(std::size_t e) const;
   // What a failing certificate is about: the points and segments of its
-  // cuts (see above; a flip's segment), and the node its path starts from
-  // (a transient node, an endpoint's leaf; none for a flip).
+  // cuts (see above; a flip's segment; a collinear endpoint's own segment
+  // too), and the node its path starts from (a transient node, an
+  // endpoint's leaf; none for a flip).
   std::size_t subjects(const Entry& e, std::vector<Site_point>& points, std::vector<std::size_t>& segments) const;
-  // The subtrees to replay for a failing certificate (see above).
+  // The subtrees to replay for a failing certificate (see above; the whole
+  // tree for a collinear endpoint's).
   std::vector<std::size_t> roots(const Entry& e) const;
   // The nodes where a sign may change: the failing transient nodes and
   // endpoints' leaves, and below the roots every cut of a point or segment
