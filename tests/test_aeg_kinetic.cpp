@@ -215,6 +215,36 @@ TEST_CASE("walls crossing: a vertex event remakes the two leaves of B_{i-1} it m
   CHECK(run.validation_failures().empty());
 }
 
+// Two cells failing for one wall crossing: s0.1 moves right through the
+// abscissa of the crossing of the later s1 and s2 at t = 4. s0.1's cut,
+// made before s1, runs across s1, so the crossing's two cuts, above and
+// below s1, each bound a cell whose other wall is s0.1's, and both
+// collapse; the sign that changed is still one, decided by s2's steps at
+// s0.1's cut, and the batch is remade at the frontier too.
+TEST_CASE("walls crossing: the two cells above and below a segment remake at the frontier", "[segments][aeg]") {
+  const auto s = scene_of({moving(linear(0, 0), linear(10, 0), linear(7, 1), linear(10, 0)), fixed(6, 0, 12, 0),
+                           fixed(5, -30, 13, 10)},
+                          {0, 1, 2}, 0, 9);
+  const auto scene = [&] {
+    auto t = s;
+    t.end = mpq_class(9, 2);
+    return t;
+  }();
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, scene, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, scene);
+  REQUIRE(run.next_event_time());
+  const auto b = run.advance();
+  const Site_point s01 = Site_point::endpoint(1), y = Site_point::crossing(1, 2);
+  CHECK(b.time.to_string() == "4");
+  CHECK(b.failing == std::vector<Aeg_certificate_id>{transient(s01, y, {}, 1), transient(s01, y, 1, {})});
+  CHECK(b.replays > 0);
+  CHECK(b.frontier_replays == b.replays);
+  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(17, 4))).text());
+  CHECK(same_log(run, pred, b.time));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
 // The same event with a point beside it: s1.1 has s2.1's abscissa for good
 // (the degenerate family's shared x-coordinates), so both pass s0.0's wall
 // at t = 1. s2 is inserted before s1, and only the cell between s2.1 and

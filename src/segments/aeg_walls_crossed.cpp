@@ -1,8 +1,9 @@
-// A lone failing cell of the run on the paper's certificates whose walls
-// crossed, updated by rerouting the later wall's segment
+// Failing cells of the run on the paper's certificates whose walls, the
+// same two, crossed, updated by rerouting the later wall's segment
 // (kvd/segments/aeg_kinetic_bsp.hpp, walls_crossed;
 // proofs/segment-local-update.md, "Frontier replay").
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -23,35 +24,51 @@ std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank
 
 template <class K>
 std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Entry>& entries) {
-  if (entries.size() != 1 || entries.front().kind != Aeg_certificate_kind::transient) return {};
-  const std::size_t cell_node = entries.front().index;
-  const Cell& c = transient_.at(cell_node).id.cell;
-  if (!c.left || !c.right || pred_.compare_x(*c.left, *c.right, now_).sign <= 0) return {};
-  if (c.floor && c.roof)
-    for (const auto& wall : {c.left, c.right})
-      if (pred_.order_at(*wall, *c.roof, *c.floor, now_).sign < 0) return {};
+  // Every failing certificate a transient cell's between the same two
+  // walls (above and below a segment that the walls' cuts both cross), its
+  // walls crossed and its roof still above its floor.
+  if (entries.empty()) return {};
+  std::vector<std::size_t> cells;
+  std::optional<std::pair<Site_point, Site_point>> walls;
+  for (const Entry& e : entries) {
+    if (e.kind != Aeg_certificate_kind::transient) return {};
+    const Cell& c = transient_.at(e.index).id.cell;
+    if (!c.left || !c.right || (walls && *walls != std::pair(*c.left, *c.right))) return {};
+    walls = std::pair(*c.left, *c.right);
+    if (pred_.compare_x(*c.left, *c.right, now_).sign <= 0) return {};
+    if (c.floor && c.roof)
+      for (const auto& wall : {c.left, c.right})
+        if (pred_.order_at(*wall, *c.roof, *c.floor, now_).sign < 0) return {};
+    cells.push_back(e.index);
+  }
   const std::vector<std::size_t>& rank = scene_.rank;
-  Site_point later = *c.left, earlier = *c.right;
+  auto [later, earlier] = *walls;
   if (point_rank(later, rank) < point_rank(earlier, rank)) std::swap(later, earlier);
   const std::size_t r = point_rank(later, rank);
   if (point_rank(earlier, rank) == r) return {};
   const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
-  // The frontier node above the cell (the later point's cut lies between
+  // The frontier node above each cell (the later point's cut lies between
   // them), and no tie at now of the later point with a cut above it but the
   // earlier point's: a change there may be another event's.
-  std::size_t frontier = cell_node;
-  std::set<std::size_t> path;
-  for (std::int32_t a = parent(cell_node); a >= 0; a = parent(static_cast<std::size_t>(a))) {
-    const auto n = static_cast<std::size_t>(a);
-    const Bsp_node& q = tree_.nodes[n];
-    path.insert(n);
-    if (cut_rank(q, rank) >= r) {
-      frontier = n;
-      continue;
+  std::set<std::size_t> replayed;
+  std::vector<std::set<std::size_t>> paths;
+  for (const std::size_t cell : cells) {
+    std::size_t frontier = cell;
+    std::set<std::size_t>& path = paths.emplace_back();
+    for (std::int32_t a = parent(cell); a >= 0; a = parent(static_cast<std::size_t>(a))) {
+      const auto n = static_cast<std::size_t>(a);
+      const Bsp_node& q = tree_.nodes[n];
+      path.insert(n);
+      if (cut_rank(q, rank) >= r) {
+        frontier = n;
+        continue;
+      }
+      if (point_cut(q) && q.point == earlier) continue;
+      const Segment_sign s =
+          q.kind == Cut_kind::edge ? pred_.side(later, q.segment, now_) : pred_.compare_x(later, q.point, now_);
+      if (s.rule != Segment_rule::value && s.rule != Segment_rule::identity) return {};
     }
-    if (point_cut(q) && q.point == earlier) continue;
-    const Segment_sign s = q.kind == Cut_kind::edge ? pred_.side(later, q.segment, now_) : pred_.compare_x(later, q.point, now_);
-    if (s.rule != Segment_rule::value && s.rule != Segment_rule::identity) return {};
+    replayed.insert(frontier);
   }
   // The topmost nodes where the later segment's steps decide the x order of
   // the two points: cuts of the earlier point above the frontier, found down
@@ -77,7 +94,10 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
     }
     for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));
   }
-  if (std::none_of(tops.begin(), tops.end(), [&](std::size_t u) { return path.count(u) > 0; })) return {};
+  // Each cell lies below one of them (its earlier wall's cut, through
+  // which its later wall's point was located).
+  for (const std::set<std::size_t>& path : paths)
+    if (std::none_of(tops.begin(), tops.end(), [&](std::size_t u) { return path.count(u) > 0; })) return {};
   // Another segment's point reaching the earlier point's abscissa now (as
   // one with the later point's x for good does, in the degenerate family)
   // changes its own steps there, which no certificate of the set may say:
@@ -96,7 +116,6 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
     }
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   if (!validate_) builder.log_traces_only();
-  std::set<std::size_t> replayed{frontier};
   for (const std::size_t u : tops) {
     const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, {});
     replayed.insert(moved.begin(), moved.end());

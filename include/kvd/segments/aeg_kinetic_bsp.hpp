@@ -22,8 +22,9 @@
 // the other side of its first, the subtrees beside them change places, and
 // below s_i's edge cut between them every intersection cut swaps its
 // children; the cells, logs and certificates of the nodes touched follow
-// (proofs/segment-certificates.md, "Flips in place"). A lone transient cell
-// whose walls crossed reroutes the later wall's segment (walls_crossed).
+// (proofs/segment-certificates.md, "Flips in place"). Transient cells alone
+// whose walls, the same two, crossed reroute the later wall's segment
+// (walls_crossed).
 // Any other batch, and a flip that meets anything else at its instant, is
 // replayed:
 //
@@ -253,8 +254,9 @@ private:
   // With `identities` false, a sign zero by identity (`at` a crossing on
   // the cut's segment, for good) is no tie.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
-  // A lone failing transient cell whose walls crossed, roof and floor in
-  // order: the walls' points were put by two insertions, and the only sign
+  // Failing transient cells alone, all between the same two walls (above
+  // and below a segment both walls' cuts cross), whose walls crossed, roof
+  // and floor in order: the walls' points were put by two insertions, and the only sign
   // that changed is their x order, which only the later segment's steps
   // decide (at the earlier point's cuts). When no cut above the frontier
   // ties with the later point at now but the earlier point's, that
