@@ -125,10 +125,10 @@ void Aeg_kinetic_bsp<K>::ask(const Certificate& c, std::size_t index) {
 }
 
 template <class K>
-std::vector<int> Aeg_kinetic_bsp<K>::signs(const Certificate& c, std::size_t index) {
-  std::vector<int> out;
-  const Recording recording(pred_, [&](const Segment_certificate_key&, std::vector<P>&&, std::int32_t, int sign) {
-    out.push_back(sign);
+typename Aeg_kinetic_bsp<K>::Decided Aeg_kinetic_bsp<K>::signs(const Certificate& c, std::size_t index) {
+  Decided out;
+  const Recording recording(pred_, [&](const Segment_certificate_key& key, std::vector<P>&&, std::int32_t, int sign) {
+    out.emplace_back(key, sign);
   });
   ask(c, index);
   return out;
@@ -139,9 +139,11 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, std::size_t index) {
   // Every sign decided by arithmetic hands over its polynomials (identities
   // have none: they never change).
   polys_.clear();
+  c.decided.clear();
   {
-    const Recording recording(pred_, [this](const Segment_certificate_key&, std::vector<P>&& polys, std::int32_t, int) {
+    const Recording recording(pred_, [&](const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t, int sign) {
       for (P& q : polys) polys_.push_back(std::move(q));
+      c.decided.emplace_back(key, sign);
     });
     ask(c, index);
   }
@@ -692,7 +694,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::set_motion(std::size_t se
   // now under the old motion and then the new: the same signs make new
   // polynomials and a new failure time; other signs are a failure now.
   const std::vector<Held> named = naming(segment);
-  std::vector<std::vector<int>> was;
+  std::vector<Decided> was;
   for (const Held& h : named) was.push_back(signs(held(h), h.index));
   scene_.segments[segment].motion = motion;
   pred_.refresh(segment, now_);

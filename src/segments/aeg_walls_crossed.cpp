@@ -1,5 +1,6 @@
-// Failing cells of the run on the paper's certificates whose walls, the
-// same two, crossed, updated by rerouting the later wall's segment
+// A batch of the run on the paper's certificates whose failing certificates
+// changed one x order, two walls crossing, updated by rerouting the later
+// wall's segment
 // (kvd/segments/aeg_kinetic_bsp.hpp, walls_crossed;
 // proofs/segment-local-update.md, "Frontier replay").
 #include <algorithm>
@@ -24,35 +25,36 @@ std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank
 
 template <class K>
 std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Entry>& entries) {
-  // Every failing certificate a transient cell's between the same two
-  // walls (above and below a segment that the walls' cuts both cross), its
-  // walls crossed and its roof still above its floor.
+  // The signs of the failing certificates that changed, against those they
+  // were made with: one key for all, the x order of two points.
   if (entries.empty()) return {};
-  std::vector<std::size_t> cells;
-  std::optional<std::pair<Site_point, Site_point>> walls;
+  std::optional<Segment_certificate_key> changed;
+  std::vector<std::size_t> from;  // the node each certificate's path starts at
   for (const Entry& e : entries) {
-    if (e.kind != Aeg_certificate_kind::transient) return {};
-    const Cell& c = transient_.at(e.index).id.cell;
-    if (!c.left || !c.right || (walls && *walls != std::pair(*c.left, *c.right))) return {};
-    walls = std::pair(*c.left, *c.right);
-    if (pred_.compare_x(*c.left, *c.right, now_).sign <= 0) return {};
-    if (c.floor && c.roof)
-      for (const auto& wall : {c.left, c.right})
-        if (pred_.order_at(*wall, *c.roof, *c.floor, now_).sign < 0) return {};
-    cells.push_back(e.index);
+    if (e.kind == Aeg_certificate_kind::flip) return {};
+    const Certificate& c = held({e.kind, e.index});
+    const Decided now = signs(c, e.index);
+    if (now.size() != c.decided.size()) return {};
+    for (std::size_t i = 0; i < now.size(); ++i) {
+      if (now[i] == c.decided[i]) continue;
+      if (now[i].first != c.decided[i].first || (changed && *changed != now[i].first)) return {};
+      changed = now[i].first;
+    }
+    from.push_back(e.kind == Aeg_certificate_kind::transient ? e.index : leaf_[e.index]);
   }
+  if (!changed || changed->kind != Segment_certificate_key::Kind::x_order) return {};
   const std::vector<std::size_t>& rank = scene_.rank;
-  auto [later, earlier] = *walls;
+  Site_point later = changed->p, earlier = changed->q;
   if (point_rank(later, rank) < point_rank(earlier, rank)) std::swap(later, earlier);
   const std::size_t r = point_rank(later, rank);
   if (point_rank(earlier, rank) == r) return {};
   const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
-  // The frontier node above each cell (the later point's cut lies between
-  // them), and no tie at now of the later point with a cut above it but the
+  // The frontier node above each certificate's node (a transient cell, the
+  // leaf beside an endpoint), and no tie at now of the later point with a cut above it but the
   // earlier point's: a change there may be another event's.
   std::set<std::size_t> replayed;
   std::vector<std::set<std::size_t>> paths;
-  for (const std::size_t cell : cells) {
+  for (const std::size_t cell : from) {
     std::size_t frontier = cell;
     std::set<std::size_t>& path = paths.emplace_back();
     for (std::int32_t a = parent(cell); a >= 0; a = parent(static_cast<std::size_t>(a))) {
@@ -73,8 +75,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
   // The topmost nodes where the later segment's steps decide the x order of
   // the two points: cuts of the earlier point above the frontier, found down
   // the nodes whose log holds a step of that segment.
-  const Segment_certificate_key key{Segment_certificate_key::Kind::x_order, std::min(later, earlier),
-                                    std::max(later, earlier), 0, 0};
+  const Segment_certificate_key& key = *changed;
   std::vector<std::size_t> tops, stack{0};
   std::vector<Segment_certificate_key> keys;
   while (!stack.empty()) {
@@ -94,8 +95,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
     }
     for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));
   }
-  // Each cell lies below one of them (its earlier wall's cut, through
-  // which its later wall's point was located).
+  // Each certificate's node lies below one of them (a cell below its
+  // earlier wall's cut, through which its later wall's point was located).
   for (const std::set<std::size_t>& path : paths)
     if (std::none_of(tops.begin(), tops.end(), [&](std::size_t u) { return path.count(u) > 0; })) return {};
   // Another segment's point reaching the earlier point's abscissa now (as

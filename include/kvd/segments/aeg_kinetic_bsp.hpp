@@ -22,9 +22,9 @@
 // the other side of its first, the subtrees beside them change places, and
 // below s_i's edge cut between them every intersection cut swaps its
 // children; the cells, logs and certificates of the nodes touched follow
-// (proofs/segment-certificates.md, "Flips in place"). Transient cells alone
-// whose walls, the same two, crossed reroute the later wall's segment
-// (walls_crossed).
+// (proofs/segment-certificates.md, "Flips in place"). A batch whose failing
+// certificates changed one x order between them, two walls crossing,
+// reroutes the later wall's segment (walls_crossed).
 // Any other batch, and a flip that meets anything else at its instant, is
 // replayed:
 //
@@ -152,11 +152,14 @@ public:
 
 private:
   using P = typename K::Poly;
+  // Signs with the keys they decide.
+  using Decided = std::vector<std::pair<Segment_certificate_key, int>>;
   struct Certificate {
     Aeg_certificate_id id;
     std::optional<Time> fails;  // within the span
     std::uint64_t version = 0;  // queue entries of another version are stale
     Cell near;                  // an endpoint's: the leaf beside it, whose floor and roof it reads
+    Decided decided;            // its signs when made, which hold until it fails
   };
   // Cells in the order of their walls, floor and roof.
   struct Cell_less {
@@ -185,7 +188,7 @@ private:
   // floor and roof for an endpoint, its endpoints' x order for a segment.
   void ask(const Certificate& c, std::size_t index);
   // Those signs just after now.
-  std::vector<int> signs(const Certificate& c, std::size_t index);
+  Decided signs(const Certificate& c, std::size_t index);
   // The certificate made again and queued at its failure: the first root
   // after now of the polynomials of its signs.
   void make(Certificate& c, std::size_t index);
@@ -254,20 +257,22 @@ private:
   // With `identities` false, a sign zero by identity (`at` a crossing on
   // the cut's segment, for good) is no tie.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
-  // Failing transient cells alone, all between the same two walls (above
-  // and below a segment both walls' cuts cross), whose walls crossed, roof
-  // and floor in order: the walls' points were put by two insertions, and the only sign
-  // that changed is their x order, which only the later segment's steps
-  // decide (at the earlier point's cuts). When no cut above the frontier
-  // ties with the later point at now but the earlier point's, that
-  // segment's steps are decided again from the topmost of those cuts
-  // (reroute_segment) and the frontier nodes whose arrivals changed, with
-  // the cell's, are returned to be made again, its cuts first
-  // (proofs/segment-local-update.md, "Frontier replay", "Walls crossing on
-  // the paper's set"). Another segment's point tying with the earlier
-  // point at now (one with the later point's abscissa for good, hidden
-  // behind its wall) would change its steps unseen: then, as on a tie, and
-  // when the argument does not apply, nothing is done and none returned.
+  // A batch whose failing certificates (transient cells and endpoints, no
+  // flip) changed one sign between them, against the signs each was made
+  // with (Certificate::decided): the x order of two points that two
+  // insertions put, two walls crossing (the cells between them collapse;
+  // an endpoint's neighbour ends before it). Only the later point's
+  // segment's steps decide that sign (at the earlier point's cuts). When no
+  // cut on the certificates' paths above the frontier ties with the later
+  // point at now but the earlier point's, nor another segment's point
+  // stepping through those cuts with the earlier point (one with the later
+  // point's abscissa for good, hidden behind its wall, would change its
+  // steps unseen), that segment's steps are decided again from the topmost
+  // of those cuts (reroute_segment) and the frontier nodes whose arrivals
+  // changed, and those above the certificates' nodes, are returned to be
+  // made again, its cuts first (proofs/segment-local-update.md, "Frontier
+  // replay", "Walls crossing on the paper's set"); else nothing is done and
+  // none returned.
   std::vector<Replay_root> walls_crossed(const std::vector<Entry>& entries);
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.
