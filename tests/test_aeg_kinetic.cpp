@@ -245,6 +245,32 @@ TEST_CASE("walls crossing: the two cells above and below a segment remake at the
   CHECK(run.validation_failures().empty());
 }
 
+// An endpoint's neighbour ends before it: s2.0 moves right under s1.1 at
+// t = 1, so s1.1 loses s2 as its segment below and s2.0 loses s1 as its
+// segment above, and the cell between s2.0's wall and s1.1's collapses.
+// The three certificates changed one sign, the x order of s2.0 and s1.1,
+// which only s2's steps decide: the batch is remade at the frontier, the
+// two endpoints' certificates made again from their new leaves.
+TEST_CASE("walls crossing: an endpoint whose neighbour ends before it remakes at the frontier", "[segments][aeg]") {
+  const auto s = scene_of({fixed(0, 0, 20, 0), fixed(5, 5, 10, 5), moving(linear(9, 1), linear(2, 0), linear(20, 0), linear(2, 0))},
+                          {0, 1, 2}, 0, 2);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, s);
+  REQUIRE(run.next_event_time());
+  const auto b = run.advance();
+  CHECK(b.time.to_string() == "1");
+  CHECK(b.failing ==
+        std::vector<Aeg_certificate_id>{transient(Site_point::endpoint(4), Site_point::endpoint(3), 0, 1), endpoint(3),
+                                        endpoint(4)});
+  CHECK(b.replays > 0);
+  CHECK(b.frontier_replays == b.replays);
+  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
+  CHECK(same_log(run, pred, b.time));
+  for (std::size_t e = 0; e < 6; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
 // The same event with a point beside it: s1.1 has s2.1's abscissa for good
 // (the degenerate family's shared x-coordinates), so both pass s0.0's wall
 // at t = 1. s2 is inserted before s1, and only the cell between s2.1 and
