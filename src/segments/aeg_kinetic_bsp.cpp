@@ -438,12 +438,15 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::tops(std::size_t s) const {
 }
 
 template <class K>
+bool Aeg_kinetic_bsp<K>::ties(const Bsp_node& n, const Site_point& at, bool identities) const {
+  const Segment_sign s = n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_);
+  return s.rule != Segment_rule::value && (identities || s.rule != Segment_rule::identity);
+}
+
+template <class K>
 std::size_t Aeg_kinetic_bsp<K>::above_ties(std::size_t top, const Site_point& at, bool identities) const {
-  for (std::int32_t a = tree_.nodes[top].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent) {
-    const Bsp_node& n = tree_.nodes[static_cast<std::size_t>(a)];
-    const Segment_sign s = n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_);
-    if (s.rule != Segment_rule::value && (identities || s.rule != Segment_rule::identity)) top = static_cast<std::size_t>(a);
-  }
+  for (std::int32_t a = tree_.nodes[top].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+    if (ties(tree_.nodes[static_cast<std::size_t>(a)], at, identities)) top = static_cast<std::size_t>(a);
   return top;
 }
 

@@ -13,23 +13,13 @@
 
 namespace kvd::segments {
 
-namespace {
-
-// The place in the priority order of the insertion that puts a point's cut:
-// an endpoint's segment's, the later of a crossing's two.
-std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank) {
-  return p.kind == Site_point::Kind::endpoint ? rank[p.a / 2] : std::max(rank[p.a], rank[p.b]);
-}
-
-}  // namespace
-
 template <class K>
 std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Entry>& entries) {
   // The signs of the failing certificates that changed, against those they
   // were made with: one key for all, the x order of two points.
   if (entries.empty()) return {};
   std::optional<Segment_certificate_key> changed;
-  std::vector<std::size_t> from;  // the node each certificate's path starts at
+  std::vector<std::size_t> starts;  // the node each certificate's path starts at
   for (const Entry& e : entries) {
     if (e.kind == Aeg_certificate_kind::flip) return {};
     const Certificate& c = held({e.kind, e.index});
@@ -40,7 +30,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
       if (now[i].first != c.decided[i].first || (changed && *changed != now[i].first)) return {};
       changed = now[i].first;
     }
-    from.push_back(e.kind == Aeg_certificate_kind::transient ? e.index : leaf_[e.index]);
+    starts.push_back(e.kind == Aeg_certificate_kind::transient ? e.index : leaf_[e.index]);
   }
   if (!changed || changed->kind != Segment_certificate_key::Kind::x_order) return {};
   const std::vector<std::size_t>& rank = scene_.rank;
@@ -50,11 +40,12 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
   if (point_rank(earlier, rank) == r) return {};
   const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
   // The frontier node above each certificate's node (a transient cell, the
-  // leaf beside an endpoint), and no tie at now of the later point with a cut above it but the
-  // earlier point's: a change there may be another event's.
+  // leaf beside an endpoint), and no tie at now of the later point with a
+  // cut above it but the earlier point's: a change there may be another
+  // event's.
   std::set<std::size_t> replayed;
   std::vector<std::set<std::size_t>> paths;
-  for (const std::size_t cell : from) {
+  for (const std::size_t cell : starts) {
     std::size_t frontier = cell;
     std::set<std::size_t>& path = paths.emplace_back();
     for (std::int32_t a = parent(cell); a >= 0; a = parent(static_cast<std::size_t>(a))) {
@@ -65,10 +56,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::walls_crossed(const std::vector<Ent
         frontier = n;
         continue;
       }
-      if (point_cut(q) && q.point == earlier) continue;
-      const Segment_sign s =
-          q.kind == Cut_kind::edge ? pred_.side(later, q.segment, now_) : pred_.compare_x(later, q.point, now_);
-      if (s.rule != Segment_rule::value && s.rule != Segment_rule::identity) return {};
+      if (!(point_cut(q) && q.point == earlier) && ties(q, later, false)) return {};
     }
     replayed.insert(frontier);
   }

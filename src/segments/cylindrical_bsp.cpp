@@ -327,11 +327,15 @@ void unlog_crossings(Build_log& log, const std::set<std::size_t>& nodes, const s
   }
 }
 
+std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank) {
+  return p.kind == Site_point::Kind::endpoint ? rank[p.a / 2] : std::max(rank[p.a], rank[p.b]);
+}
+
 std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank) {
   switch (node.kind) {
     case Cut_kind::leaf: return rank.size();
-    case Cut_kind::vertex: return rank[node.point.a / 2];
-    case Cut_kind::intersection: return std::max(rank[node.point.a], rank[node.point.b]);
+    case Cut_kind::vertex:
+    case Cut_kind::intersection: return point_rank(node.point, rank);
     case Cut_kind::edge: return rank[node.segment];
   }
   return rank.size();

@@ -249,13 +249,14 @@ private:
   // segment), with their ancestors. A replay keeps an old subtree whole
   // only where its arrivals are the same and it holds none of them.
   std::set<std::size_t> changing(const std::vector<Entry>& entries, const std::vector<std::size_t>& roots) const;
-  // The topmost of `top` and its ancestors whose cut `at` meets at now (a
-  // sign there is zero at now and decided just after, or by the
-  // perturbation): a change at `at` may cross that cut, as where a crossing
-  // born at an endpoint lies on the other side of a wall with the same
-  // abscissa.
-  // With `identities` false, a sign zero by identity (`at` a crossing on
-  // the cut's segment, for good) is no tie.
+  // Whether `at` meets node n's cut at now (a sign there is zero at now and
+  // decided just after, or by the perturbation). With `identities` false, a
+  // sign zero by identity (`at` a crossing on the cut's segment, for good)
+  // is no tie.
+  bool ties(const Bsp_node& n, const Site_point& at, bool identities) const;
+  // The topmost of `top` and its ancestors whose cut `at` meets at now
+  // (ties): a change at `at` may cross that cut, as where a crossing born at
+  // an endpoint lies on the other side of a wall with the same abscissa.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
   // A batch whose failing certificates (transient cells and endpoints, no
   // flip) changed one sign between them, against the signs each was made

@@ -46,6 +46,9 @@ struct Build_log {
 // (`rank`: Segment_scene::rank); a leaf's is past every segment. It does not
 // decrease down any path: each insertion splits leaves of the tree before it.
 std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank);
+// That of the insertion that puts a point's cut: an endpoint's segment's,
+// the later of a crossing's two.
+std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank);
 
 // Puts `node` in a free slot of the tree (one of the log's, when it has
 // one; the slot's log emptied), or in a new one; returns the slot.
