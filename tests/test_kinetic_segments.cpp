@@ -5,6 +5,8 @@
 
 #include "kernels.hpp"
 #include "segment_scenes.hpp"
+#include "kvd/kernel/convert.hpp"
+#include "kvd/segments/aeg_kinetic_bsp.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 #include "kvd/segments/segment_generators.hpp"
 
@@ -46,6 +48,29 @@ TEMPLATE_TEST_CASE("a segment over an endpoint: an edge event, then an intersect
   CHECK(kin.validation_failures().empty());
   CHECK(kin.validations() == 2);
   CHECK(kin.tree().text() == "(V s0.0 . (V s0.1 (E s0 (V s1.0 . (E s1 . .)) .) (V s1.1 (E s1 . .) .)))");
+}
+
+// advance_to past the span's end processes the batches in it and stops at
+// its end: the tree in force is not claimed for instants no motion covers.
+TEMPLATE_TEST_CASE("advance_to stops at the span's end", "[segments][kinetic]", KVD_ALL_KERNELS) {
+  const auto s = scene_of({fixed(0, 0, 4, 0), moving(linear(2, 0), linear(2, -1), linear(6, 0), linear(0, -1))},
+                          {0, 1}, 0, 3);
+  const TestType k;
+  const auto at = [&](const mpq_class& t) { return k.time(from_rational<typename TestType::FT>(t)); };
+  const auto end = at(3);
+  Kinetic_segment_bsp<TestType> kept(k, s, true);
+  CHECK(kept.advance_to(at(10)).size() == 2);
+  CHECK(k.compare(kept.now(), end) == 0);
+  // The run on the paper's certificate set (exact only) too.
+  if constexpr (std::is_same_v<TestType, Exact_kernel>) {
+    Aeg_kinetic_bsp<TestType> paper(k, s, true);
+    CHECK(paper.advance_to(at(10)).size() == 2);
+    CHECK(k.compare(paper.now(), end) == 0);
+  }
+  // Before the end, now moves to the instant asked.
+  Kinetic_segment_bsp<TestType> early(k, s, false);
+  CHECK(early.advance_to(at(mpq_class(1, 2))).empty());
+  CHECK(k.compare(early.now(), at(mpq_class(1, 2))) == 0);
 }
 
 Segment_motion endpoints_motion(const QPoly& x0, const QPoly& y0, const QPoly& x1, const QPoly& y1) {

@@ -121,7 +121,7 @@ void bind_paper_segments(py::module_& m) {
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),
-           "Processes every batch at a time <= t and moves to t; how many.")
+           "Processes every batch at a time <= t and moves to t (not past the span's end); how many.")
       .def("set_motion", &Paper_segments::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change, as KineticSegments.set_motion takes it: the batches up to `at` first, then\n"
            "the segment moves by `motion` from there on, kept where it is at `at`. Only the certificates naming\n"

@@ -205,7 +205,7 @@ void bind_segments(py::module_& m) {
            "Processes the next batch and returns it, or None when nothing fails any more, `events` failures\n"
            "were processed, or the next batch is after `until`.")
       .def("advance_to", &Any_segment_kinetic::advance_to, py::arg("t"),
-           "Processes every batch at a time <= t and moves to t; how many.")
+           "Processes every batch at a time <= t and moves to t (not past the span's end); how many.")
       .def("set_motion", &Any_segment_kinetic::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change: the batches up to `at` first, then the segment moves by `motion` from there on,\n"
            "given as SEGMENT_FORMAT.md's motion object ({'translation': [x, y]}, {'matrix': ...} or\n"

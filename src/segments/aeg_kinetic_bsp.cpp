@@ -681,10 +681,7 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
 
 template <class K>
 std::vector<typename Aeg_kinetic_bsp<K>::Batch> Aeg_kinetic_bsp<K>::advance_to(const Time& t) {
-  std::vector<Batch> batches = kinetic::batches_until(*this, k_, t);
-  // No certificate fails in (now, t]: their failure times stay.
-  if (k_.compare(now_, t) < 0) now_ = t;
-  return batches;
+  return kinetic::batches_until(*this, k_, t, now_, bounded_ ? std::optional<Time>(end_) : std::nullopt);
 }
 
 template <class K>

@@ -111,10 +111,7 @@ typename Segment_predicates<K>::Recorder Kinetic_segment_bsp<K>::recorder() {
 
 template <class K>
 std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::advance_to(const Time& t) {
-  std::vector<Batch> batches = kinetic::batches_until(*this, k_, t);
-  // No certificate fails in (now, t]: their failure times stay.
-  if (k_.compare(now_, t) < 0) now_ = t;
-  return batches;
+  return kinetic::batches_until(*this, k_, t, now_, bounded_ ? std::optional<Time>(end_) : std::nullopt);
 }
 
 template <class K>

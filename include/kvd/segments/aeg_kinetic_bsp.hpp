@@ -133,7 +133,8 @@ public:
   std::optional<Time> next_event_time();
   // Processes the next batch. Precondition: next_event_time() has a value.
   Batch advance();
-  // Processes every batch at a time <= t, then moves now to t (if later).
+  // Processes every batch at a time <= t, then moves now to t (if later),
+  // but not past the span's end.
   std::vector<Batch> advance_to(const Time& t);
   // A flight-plan change: segment `segment` follows `motion` from now on.
   // The motion must put the segment where it is now (std::invalid_argument

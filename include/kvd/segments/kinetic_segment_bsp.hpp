@@ -127,7 +127,8 @@ public:
   // nothing fails after it, the batch returned is that adoption, with no
   // failures.)
   Batch advance();
-  // Processes every batch at a time <= t, then moves now to t (if later).
+  // Processes every batch at a time <= t, then moves now to t (if later),
+  // but not past the span's end.
   std::vector<Batch> advance_to(const Time& t);
   // A flight-plan change: segment `segment` follows `motion` from now on.
   // The motion must put the segment where it is now (std::invalid_argument
