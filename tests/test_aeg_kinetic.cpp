@@ -271,6 +271,64 @@ TEST_CASE("walls crossing: an endpoint whose neighbour ends before it remakes at
   CHECK(run.validation_failures().empty());
 }
 
+// The scene of the first test, validated: at t = 1 s1 passes over s0.1 (an
+// edge event: the side of s0.1 to s1 changes), at t = 2 s1.0 passes down
+// through s0 (an intersection event: the side of s1.0 to s0 and the x order
+// of s1.0 and the crossing s0xs1 change). Every changed key names s1, the
+// later segment, whose steps alone decide it (at s0.1's cut, at s0's edge
+// cut): both batches reroute s1 and remake only leaves of B_0, to the trees
+// derived by hand and a fresh construction's log.
+TEST_CASE("rerouting: an edge and an intersection event remake at the frontier", "[segments][aeg]") {
+  const auto s = scene_of({fixed(0, 0, 4, 0), moving(linear(2, 0), linear(2, -1), linear(6, 0), linear(0, -1))},
+                          {0, 1}, 0, 3);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, s);
+  const std::vector<std::string> trees{
+      "(V s0.0 . (V s0.1 (E s0 (I s0xs1 . (E s1 . .)) (V s1.0 . (I s0xs1 (E s1 . .) .))) (V s1.1 (E s1 . .) .)))",
+      "(V s0.0 . (V s0.1 (E s0 (V s1.0 . (E s1 . .)) .) (V s1.1 (E s1 . .) .)))"};
+  for (const std::string& tree : trees) {
+    REQUIRE(run.next_event_time());
+    const auto b = run.advance();
+    INFO("t = " << b.time.to_string());
+    CHECK(b.replays > 0);
+    CHECK(b.frontier_replays == b.replays);
+    CHECK(run.tree().text() == tree);
+    CHECK(same_log(run, pred, b.time));
+    for (std::size_t e = 0; e < 4; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+  }
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
+// Two vertex events at one instant, apart: the scene of "a vertex event
+// remakes the two leaves" twice, the copy 100 to the right (s4 to s7), so
+// that s2.1 passes s1.0's wall and s6.1 passes s5.0's at t = 1. The changed
+// keys are two segments' (s2's, s6's), decided at cuts neither of which lies
+// below the other: each segment is rerouted, and the four leaves of B_{i-1}
+// they move between are remade, to a fresh construction's tree and log.
+TEST_CASE("rerouting: two events at one instant in disjoint subtrees remake at the frontier", "[segments][aeg]") {
+  const auto copy = [](long dx) {
+    return std::vector{fixed(0 + dx, 0, 20 + dx, 0), fixed(8 + dx, 5, 10 + dx, 5),
+                       moving(linear(3 + dx, 0), linear(2, 0), linear(7 + dx, 1), linear(2, 0)), fixed(1 + dx, 1, 15 + dx, 1)};
+  };
+  auto segments = copy(0);
+  for (auto& g : copy(100)) segments.push_back(g);
+  const auto s = scene_of(segments, {0, 1, 2, 3, 4, 5, 6, 7}, 0, 2);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, s);
+  REQUIRE(run.next_event_time());
+  const auto b = run.advance();
+  CHECK(b.time.to_string() == "1");
+  CHECK(b.failing.size() == 2);
+  CHECK(b.replays == 4);
+  CHECK(b.frontier_replays == 4);
+  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
+  CHECK(same_log(run, pred, b.time));
+  for (std::size_t e = 0; e < 16; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
 // The same event with a point beside it: s1.1 has s2.1's abscissa for good
 // (the degenerate family's shared x-coordinates), so both pass s0.0's wall
 // at t = 1. s2 is inserted before s1, and only the cell between s2.1 and

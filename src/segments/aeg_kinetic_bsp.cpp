@@ -641,7 +641,7 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
   if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
   } else if (!entries.empty()) {
-    std::vector<Replay_root> top = walls_crossed(entries);
+    std::vector<Replay_root> top = reroutes(entries);
     if (top.empty()) {
       // The subtrees the failing certificates name, none below another, their
       // ties read at the batch's instant (signs that vanish there cost most:

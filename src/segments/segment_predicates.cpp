@@ -161,12 +161,14 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
   std::vector<P> deciding;
   int sign = 1;
   Segment_rule rule = Segment_rule::value;
+  bool at_root = false;
   for (std::size_t f = 0; f < v.size(); ++f) {
     if (!vanishes(v[f])) {
       int s = k_->sign_at(v[f], t);
       if (s == 0) {
         s = k_->sign_after(v[f], t);
         rule = std::max(rule, Segment_rule::after);
+        at_root = true;
       }
       sign *= s;
       if (recorder_ && v[f].degree() > 0) deciding.push_back(v[f]);
@@ -177,7 +179,10 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
     for (const P& c : (*expanded)[f].coefficients()) {
       if (vanishes(c)) continue;
       s = k_->sign_at(c, t);
-      if (s == 0) s = k_->sign_after(c, t);
+      if (s == 0) {
+        s = k_->sign_after(c, t);
+        at_root = true;
+      }
       if (recorder_ && c.degree() > 0) deciding.push_back(c);
       break;
     }
@@ -187,7 +192,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
   }
   ++(rule == Segment_rule::value ? counts_.value : rule == Segment_rule::after ? counts_.after : counts_.perturbation);
   if (recorder_) recorder_(key, std::move(deciding), node_, sign);
-  return {sign, rule};
+  return {sign, rule, at_root};
 }
 
 template <class K>
@@ -200,7 +205,7 @@ Segment_sign Segment_predicates<K>::compare_x(const Site_point& a, const Site_po
   // it is asked, so that its sign and factors are the key's.
   if (b < a) {
     const Segment_sign r = compare_x(b, a, t);
-    return {-r.sign, r.rule};
+    return {-r.sign, r.rule, r.at_root};
   }
   return decide({Segment_certificate_key::Kind::x_order, a, b, 0, 0}, t);
 }
@@ -219,7 +224,7 @@ Segment_sign Segment_predicates<K>::order_at(const Site_point& p, std::size_t i,
   if (p.on(i)) return side(p, j, t);
   if (p.on(j)) {
     const Segment_sign r = side(p, i, t);
-    return {-r.sign, r.rule};
+    return {-r.sign, r.rule, r.at_root};
   }
   return decide(
       {Segment_certificate_key::Kind::order_at, p, {}, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)}, t);

@@ -23,8 +23,9 @@
 // below s_i's edge cut between them every intersection cut swaps its
 // children; the cells, logs and certificates of the nodes touched follow
 // (proofs/segment-certificates.md, "Flips in place"). A batch whose failing
-// certificates changed one x order between them, two walls crossing,
-// reroutes the later wall's segment (walls_crossed).
+// certificates changed only signs that one segment's steps decide (two
+// walls crossing, an endpoint passing through a segment; several apart)
+// reroutes that segment (reroutes).
 // Any other batch, and a flip that meets anything else at its instant, is
 // replayed:
 //
@@ -98,7 +99,7 @@ public:
     bool changed = false;                     // the tree just after differs from the one before
     std::size_t certificates = 0;             // in force after the batch
     std::size_t replays = 0;                  // subtrees replayed
-    std::size_t frontier_replays = 0;         // of those, below one segment's steps decided again (walls_crossed)
+    std::size_t frontier_replays = 0;         // of those, below one segment's steps decided again (reroutes)
     std::size_t nodes_rebuilt = 0;            // nodes made again
     std::size_t flipped_in_place = 0;         // leaves of B_{i-1} of a flip turned in place, not replayed
     std::size_t nodes_edited = 0;             // nodes whose children, cell or log those edits changed
@@ -260,22 +261,22 @@ private:
   // an endpoint lies on the other side of a wall with the same abscissa.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
   // A batch whose failing certificates (transient cells and endpoints, no
-  // flip) changed one sign between them, against the signs each was made
-  // with (Certificate::decided): the x order of two points that two
-  // insertions put, two walls crossing (the cells between them collapse;
-  // an endpoint's neighbour ends before it). Only the later point's
-  // segment's steps decide that sign (at the earlier point's cuts). When no
-  // cut on the certificates' paths above the frontier ties with the later
-  // point at now but the earlier point's, nor another segment's point
-  // stepping through those cuts with the earlier point (one with the later
-  // point's abscissa for good, hidden behind its wall, would change its
-  // steps unseen), that segment's steps are decided again from the topmost
-  // of those cuts (reroute_segment) and the frontier nodes whose arrivals
-  // changed, and those above the certificates' nodes, are returned to be
-  // made again, its cuts first (proofs/segment-local-update.md, "Frontier
-  // replay", "Walls crossing on the paper's set"); else nothing is done and
-  // none returned.
-  std::vector<Replay_root> walls_crossed(const std::vector<Entry>& entries);
+  // flip) changed signs, against those each was made with
+  // (Certificate::decided), that one segment's steps decide: each changed
+  // key (taken as an x order, `normal`) names that segment last, as two
+  // walls crossing do (the later wall's segment) and an endpoint passing
+  // through a segment (the later of the two); several such segments at one
+  // instant when their nodes lie apart. For each, the topmost nodes above
+  // its frontier where its steps decide a changed key are found; when none
+  // of its other steps there, nor another segment's step at those nodes
+  // about the changed points, changes sign now, and no cut on the
+  // certificates' paths above the frontier ties with its points now but the
+  // keys' own, its steps are decided again from those nodes
+  // (reroute_segment) and the frontier nodes whose arrivals changed, and
+  // those above the certificates' nodes, are returned to be made again, its
+  // cuts first (proofs/segment-local-update.md, "Frontier replay",
+  // "Rerouting on the paper's set"); else nothing is done and none returned.
+  std::vector<Replay_root> reroutes(const std::vector<Entry>& entries);
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.
   bool crossing(std::size_t i, std::size_t j) const;

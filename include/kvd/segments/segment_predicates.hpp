@@ -133,6 +133,10 @@ Segment_event event_in_batch(const Segment_certificate_key& k, const std::vector
 struct Segment_sign {
   int sign;           // -1, 0, +1
   Segment_rule rule;  // the rule that decided
+  // Whether a polynomial that decided it (a factor, or the first ε-coefficient
+  // of one that vanishes for good) vanishes at the instant asked: the sign may
+  // change there. Not known for a held sign.
+  bool at_root = false;
 };
 
 struct Segment_rule_counts {

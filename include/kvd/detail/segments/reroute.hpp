@@ -1,9 +1,8 @@
 // One segment's steps below a node decided again, down to the tree before
 // that segment (proofs/segment-local-update.md, "Frontier replay"). Both
 // kinetic runs use it: Kinetic_segment_bsp when the keys that changed at
-// its topmost failing node are one segment's, Aeg_kinetic_bsp when its
-// failing certificates changed one x order of two points that different
-// segments put (walls_crossed).
+// its topmost failing node are one segment's, Aeg_kinetic_bsp when the
+// signs its failing certificates changed are one segment's (reroutes).
 #pragma once
 
 #include <cstddef>

@@ -1,0 +1,221 @@
+// A batch of the run on the paper's certificates whose failing certificates
+// changed only keys that one segment's steps decide, updated by rerouting
+// that segment: two walls crossing (the later wall's segment), an endpoint
+// passing through a segment (the later of the two); several such at one
+// instant in disjoint subtrees
+// (kvd/segments/aeg_kinetic_bsp.hpp, reroutes;
+// proofs/segment-local-update.md, "Rerouting on the paper's set").
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+
+#include "kvd/kernel/kernel.hpp"
+#include "kvd/segments/aeg_kinetic_bsp.hpp"
+
+namespace kvd::segments {
+
+namespace {
+
+using Key = Segment_certificate_key;
+
+// The rank of the latest segment a key names: only that segment's steps
+// decide it (a step decides keys of its own segment's points against the
+// cut of an earlier or the same insertion).
+std::size_t latest(const Key& k, const std::vector<std::size_t>& rank) {
+  std::size_t r = 0;
+  for (const std::size_t s : named_segments(k)) r = std::max(r, rank[s]);
+  return r;
+}
+
+// A key as the x order of two points, for keys whose signs change together
+// (their polynomials differ by factors that keep their sign off a flip):
+// the side of a point of line a to line s is the x order of the point and
+// the crossing of a and s, and the vertical order of lines i and j at the
+// abscissa of p is the x order of p and their crossing. (Of a crossing of
+// a and b, line a is taken: both vanish when the three lines meet.)
+Key normal(const Key& k) {
+  const auto x_order = [](const Site_point& p, const Site_point& q) {
+    return Key{Key::Kind::x_order, std::min(p, q), std::max(p, q), 0, 0};
+  };
+  switch (k.kind) {
+    case Key::Kind::x_order: return k;
+    case Key::Kind::order_at: return k.i == k.j ? k : x_order(k.p, Site_point::crossing(k.i, k.j));
+    case Key::Kind::side: {
+      const std::uint32_t a = k.p.kind == Site_point::Kind::endpoint ? k.p.a / 2 : (k.p.a != k.i ? k.p.a : k.p.b);
+      return x_order(k.p, Site_point::crossing(a, k.i));
+    }
+  }
+  return k;
+}
+
+// The keys one segment's steps changed (normal), and what the guards ask
+// about them.
+struct Change {
+  std::set<Key> keys;
+  std::set<Site_point> points;            // the keys' points, as asked and as normal
+  std::set<std::size_t> segments;         // the segments of side and order_at keys as asked
+  std::vector<std::size_t> tops, starts;  // the topmost nodes deciding a key; the failing certificates' nodes
+  std::set<std::size_t> frontiers;        // the frontier nodes above the starts
+
+  void add(const Key& k) {
+    const Key n = normal(k);
+    keys.insert(n);
+    for (const Key* x : {&k, &n}) {
+      points.insert(x->p);
+      if (x->kind == Key::Kind::x_order) points.insert(x->q);
+      else segments.insert(x->i);
+      if (x->kind == Key::Kind::order_at) segments.insert(x->j);
+    }
+  }
+};
+
+}  // namespace
+
+template <class K>
+std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& entries) {
+  if (entries.empty()) return {};
+  const std::vector<std::size_t>& rank = scene_.rank;
+  // The signs of the failing certificates that changed, against those they
+  // were made with, grouped by the segment whose steps decide them; each
+  // certificate's changes are one segment's.
+  std::map<std::size_t, Change> changes;
+  std::vector<std::size_t> unchanged;  // the nodes of certificates none of whose signs changed
+  for (const Entry& e : entries) {
+    if (e.kind == Aeg_certificate_kind::flip) return {};
+    // A segment on its neighbour's line changes signs at every wall across
+    // both, which no certificate holds (proofs/segment-certificates.md).
+    if (e.kind == Aeg_certificate_kind::endpoint && collinear(e.index)) return {};
+    const Certificate& c = held({e.kind, e.index});
+    const Decided now = signs(c, e.index);
+    if (now.size() != c.decided.size()) return {};
+    std::optional<std::size_t> r;
+    for (std::size_t i = 0; i < now.size(); ++i) {
+      if (now[i] == c.decided[i]) continue;
+      const Key& k = now[i].first;
+      if (k != c.decided[i].first || (r && *r != latest(k, rank))) return {};
+      r = latest(k, rank);
+      changes[*r].add(k);
+    }
+    const std::size_t start = e.kind == Aeg_certificate_kind::transient ? e.index : leaf_[e.index];
+    if (r) changes[*r].starts.push_back(start);
+    else unchanged.push_back(start);
+  }
+  if (changes.empty() || (!unchanged.empty() && changes.size() > 1)) return {};
+  changes.begin()->second.starts.insert(changes.begin()->second.starts.end(), unchanged.begin(), unchanged.end());
+  const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
+  const auto tie = [&](const Segment_sign& s) { return s.rule != Segment_rule::value && s.rule != Segment_rule::identity; };
+  // Whether a key's sign may change now: a polynomial deciding it vanishes
+  // (not a tie for good that the perturbation decides the same way before
+  // and after; order_at of a line with itself is no sign: decided_keys
+  // lists it).
+  const auto vanishes = [&](const Key& k) {
+    if (k.kind == Key::Kind::order_at && k.i == k.j) return false;
+    return (k.kind == Key::Kind::x_order ? pred_.compare_x(k.p, k.q, now_)
+            : k.kind == Key::Kind::side  ? pred_.side(k.p, k.i, now_)
+                                         : pred_.order_at(k.p, k.i, k.j, now_))
+        .at_root;
+  };
+  std::vector<Key> keys;
+  for (auto& [r, change] : changes) {
+    const std::size_t s = scene_.priority_order[r];
+    const auto feature = [&](const Bsp_node& q) {
+      return q.kind == Cut_kind::edge ? change.segments.count(q.segment) > 0 : change.points.count(q.point) > 0;
+    };
+    // The topmost nodes, of a cut earlier than the segment's, where its
+    // steps decide a changed key, found down the nodes whose log holds a
+    // step of the segment (below a top too: every changed key must be
+    // decided there, or be the x order of two of the segment's own points,
+    // which only its cuts below the frontier decide).
+    std::set<Key> found, asked;
+    std::vector<std::pair<std::size_t, bool>> stack{{0, false}};  // a node, and whether a top is above it
+    while (!stack.empty()) {
+      const auto [n, below] = stack.back();
+      stack.pop_back();
+      const Bsp_node& q = tree_.nodes[n];
+      const std::vector<Arrival>& log = log_.at[n];
+      const auto [from, to] = rank_block(log, rank, r);
+      if (cut_rank(q, rank) >= r || from == to) continue;
+      keys.clear();
+      for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
+      bool top = false;
+      for (const Key& k : keys)
+        if (change.keys.count(normal(k)) > 0) {
+          found.insert(normal(k));
+          top = !below;
+        } else if (asked.insert(normal(k)).second && vanishes(k)) {
+          return {};  // another of the segment's signs changes now, no certificate telling
+        }
+      if (top) change.tops.push_back(n);
+      for (const std::int32_t ch : q.child) stack.emplace_back(static_cast<std::size_t>(ch), below || top);
+    }
+    for (const Key& k : change.keys)
+      if (!found.count(k) && !(k.kind == Key::Kind::x_order && point_rank(k.p, rank) == r && point_rank(k.q, rank) == r))
+        return {};
+    if (change.tops.empty()) return {};
+    // The frontier node above each certificate's node (a transient cell, the
+    // leaf beside an endpoint); and no tie at now of the segment's points
+    // among the keys', or of the segment, with a cut on the path above the
+    // frontier but the keys' own: a change there may be another event's.
+    for (const std::size_t cell : change.starts) {
+      std::size_t frontier = cell;
+      for (std::int32_t a = parent(cell); a >= 0; a = parent(static_cast<std::size_t>(a))) {
+        const auto n = static_cast<std::size_t>(a);
+        const Bsp_node& q = tree_.nodes[n];
+        if (cut_rank(q, rank) >= r) {
+          frontier = n;
+          continue;
+        }
+        if (feature(q)) continue;
+        for (const Site_point& z : change.points)
+          if (point_rank(z, rank) == r && ties(q, z, false)) return {};
+        if (point_cut(q) && tie(pred_.side(q.point, s, now_))) return {};
+      }
+      change.frontiers.insert(frontier);
+    }
+    // Another segment's step at a top deciding a key about the changed
+    // points or segments that ties now (a point at one of their abscissae
+    // for good, hidden behind a wall, as in the degenerate family) changes
+    // unseen by any certificate of the set.
+    for (const std::size_t u : change.tops)
+      for (const Arrival& a : log_.at[u]) {
+        if (a.segment == s) continue;
+        keys.clear();
+        decided_keys(tree_.nodes[u], a, keys);
+        for (const Key& k : keys) {
+          const bool about = change.points.count(k.p) > 0 || (k.kind == Key::Kind::x_order ? change.points.count(k.q) > 0
+                                                                                           : change.segments.count(k.i) > 0);
+          if (about && !change.keys.count(normal(k)) && asked.insert(normal(k)).second && vanishes(k)) return {};
+        }
+      }
+  }
+  // Changes of different segments at one instant are rerouted only apart:
+  // no top or frontier node of one at or above another's (what a reroute
+  // changes lies below its tops).
+  for (const auto& [r, change] : changes) {
+    std::vector<std::size_t> region(change.tops.begin(), change.tops.end());
+    region.insert(region.end(), change.frontiers.begin(), change.frontiers.end());
+    for (const std::size_t v : region)
+      for (std::int32_t a = static_cast<std::int32_t>(v); a >= 0; a = parent(static_cast<std::size_t>(a)))
+        for (const auto& [r2, other] : changes)
+          if (r2 != r && (other.frontiers.count(static_cast<std::size_t>(a)) > 0 ||
+                          std::count(other.tops.begin(), other.tops.end(), static_cast<std::size_t>(a)) > 0))
+            return {};
+  }
+  Bsp_builder<K> builder(pred_, now_, tree_, &log_);
+  if (!validate_) builder.log_traces_only();
+  std::vector<Replay_root> out;
+  for (auto& [r, change] : changes) {
+    for (const std::size_t u : change.tops) {
+      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, {});
+      change.frontiers.insert(moved.begin(), moved.end());
+    }
+    for (const std::size_t n : change.frontiers) out.push_back({n, r});
+  }
+  return out;
+}
+
+template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::reroutes(const std::vector<Entry>&);
+
+}  // namespace kvd::segments
