@@ -329,6 +329,35 @@ TEST_CASE("rerouting: two events at one instant in disjoint subtrees remake at t
   CHECK(run.validation_failures().empty());
 }
 
+// Two events at one instant, one inside the other's subtree: the scene of
+// "a vertex event remakes the two leaves" with a later s4 above s3 whose
+// right endpoint passes s3.1's wall at t = 1, as s2.1 passes s1.0's. s3.1's
+// cut lies below s1.0's, where s2's steps are decided again, and inside a
+// leaf of B_1 that s2's reroute remakes: the two reroutes are not done one
+// after the other, the batch is replayed, to a fresh construction's tree
+// and log.
+TEST_CASE("rerouting: two events at one instant, one below the other, are replayed", "[segments][aeg]") {
+  const auto s = scene_of({fixed(0, 0, 20, 0), fixed(8, 5, 10, 5), moving(linear(3, 0), linear(2, 0), linear(7, 1), linear(2, 0)),
+                           fixed(1, 1, 15, 1), moving(linear(12, 0), linear(3, 0), linear(14, 1), linear(3, 0))},
+                          {0, 1, 2, 3, 4}, 0, 2);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, s);
+  REQUIRE(run.next_event_time());
+  const auto b = run.advance();
+  CHECK(b.time.to_string() == "1");
+  // The two collapsing cells, and s4.1's endpoint: s3 ends before it.
+  CHECK(b.failing == std::vector<Aeg_certificate_id>{transient(Site_point::endpoint(5), Site_point::endpoint(2), 0, {}),
+                                                     transient(Site_point::endpoint(9), Site_point::endpoint(7), 3, {}),
+                                                     endpoint(9)});
+  CHECK(b.replays > 0);
+  CHECK(b.frontier_replays == 0);
+  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
+  CHECK(same_log(run, pred, b.time));
+  for (std::size_t e = 0; e < 10; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
 // The same event with a point beside it: s1.1 has s2.1's abscissa for good
 // (the degenerate family's shared x-coordinates), so both pass s0.0's wall
 // at t = 1. s2 is inserted before s1, and only the cell between s2.1 and

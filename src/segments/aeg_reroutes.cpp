@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <unordered_set>
 #include <utility>
 
 #include "kvd/kernel/kernel.hpp"
@@ -128,7 +129,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // step of the segment (below a top too: every changed key must be
     // decided there, or be the x order of two of the segment's own points,
     // which only its cuts below the frontier decide).
-    std::set<Key> found, asked;
+    std::set<Key> found;
+    std::unordered_set<Key, Segment_certificate_key_hash> asked;
     std::vector<std::pair<std::size_t, bool>> stack{{0, false}};  // a node, and whether a top is above it
     while (!stack.empty()) {
       const auto [n, below] = stack.back();
@@ -174,20 +176,20 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       }
       change.frontiers.insert(frontier);
     }
-    // Another segment's step at a top deciding a key about the changed
-    // points or segments that ties now (a point at one of their abscissae
-    // for good, hidden behind a wall, as in the degenerate family) changes
-    // unseen by any certificate of the set.
+    // Another segment's step at a top comparing a point's abscissa with a
+    // changed point's that vanishes now (a point at its abscissa for good,
+    // hidden behind a wall, as in the degenerate family) changes unseen by
+    // any certificate of the set. (A point reaching a changed segment's
+    // line now is an event of its own: its certificates fail too.)
     for (const std::size_t u : change.tops)
       for (const Arrival& a : log_.at[u]) {
         if (a.segment == s) continue;
         keys.clear();
         decided_keys(tree_.nodes[u], a, keys);
-        for (const Key& k : keys) {
-          const bool about = change.points.count(k.p) > 0 || (k.kind == Key::Kind::x_order ? change.points.count(k.q) > 0
-                                                                                           : change.segments.count(k.i) > 0);
-          if (about && !change.keys.count(normal(k)) && asked.insert(normal(k)).second && vanishes(k)) return {};
-        }
+        for (const Key& k : keys)
+          if (k.kind == Key::Kind::x_order && (change.points.count(k.p) > 0 || change.points.count(k.q) > 0) &&
+              !change.keys.count(k) && asked.insert(k).second && vanishes(k))
+            return {};
       }
   }
   // Changes of different segments at one instant are rerouted only apart:
