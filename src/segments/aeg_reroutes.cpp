@@ -9,7 +9,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <unordered_set>
 #include <utility>
 
 #include "kvd/kernel/kernel.hpp"
@@ -55,6 +54,7 @@ Key normal(const Key& k) {
 // about them.
 struct Change {
   std::set<Key> keys;
+  std::set<Key> above;                    // of those, the ones decided above the frontier (all but x orders of its own points)
   std::set<Site_point> points;            // the keys' points, as asked and as normal
   std::set<std::size_t> segments;         // the segments of side and order_at keys as asked
   std::vector<std::size_t> tops, starts;  // the topmost nodes deciding a key; the failing certificates' nodes
@@ -98,6 +98,10 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       if (k != c.decided[i].first || (r && *r != latest(k, rank))) return {};
       r = latest(k, rank);
       changes[*r].add(k);
+      // Only the x order of two of the segment's own points is decided by
+      // its cuts alone, below the frontier.
+      if (k.kind != Key::Kind::x_order || point_rank(k.p, rank) != *r || point_rank(k.q, rank) != *r)
+        changes[*r].above.insert(normal(k));
     }
     const std::size_t start = e.kind == Aeg_certificate_kind::transient ? e.index : leaf_[e.index];
     if (r) changes[*r].starts.push_back(start);
@@ -126,35 +130,37 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     };
     // The topmost nodes, of a cut earlier than the segment's, where its
     // steps decide a changed key, found down the nodes whose log holds a
-    // step of the segment (below a top too: every changed key must be
-    // decided there, or be the x order of two of the segment's own points,
-    // which only its cuts below the frontier decide).
+    // step of the segment. Every changed key that names an earlier cut must
+    // be decided on the way, at a top or below one (looked for there while
+    // one is missing); the x order of two of the segment's own points is
+    // decided by its cuts below the frontier. Above the tops none of the
+    // segment's other signs may change now: no certificate tells, and the
+    // reroute does not decide them again (below a top it does).
     std::set<Key> found;
-    std::unordered_set<Key, Segment_certificate_key_hash> asked;
     std::vector<std::pair<std::size_t, bool>> stack{{0, false}};  // a node, and whether a top is above it
     while (!stack.empty()) {
       const auto [n, below] = stack.back();
       stack.pop_back();
+      if (below && found.size() == change.above.size()) continue;
       const Bsp_node& q = tree_.nodes[n];
+      if (cut_rank(q, rank) >= r) continue;
       const std::vector<Arrival>& log = log_.at[n];
       const auto [from, to] = rank_block(log, rank, r);
-      if (cut_rank(q, rank) >= r || from == to) continue;
+      if (from == to) continue;
       keys.clear();
       for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
       bool top = false;
       for (const Key& k : keys)
-        if (change.keys.count(normal(k)) > 0) {
-          found.insert(normal(k));
+        if (const Key x = normal(k); change.keys.count(x) > 0) {
+          if (change.above.count(x) > 0) found.insert(x);
           top = !below;
-        } else if (asked.insert(normal(k)).second && vanishes(k)) {
-          return {};  // another of the segment's signs changes now, no certificate telling
+        } else if (!below && vanishes(k)) {
+          return {};
         }
       if (top) change.tops.push_back(n);
       for (const std::int32_t ch : q.child) stack.emplace_back(static_cast<std::size_t>(ch), below || top);
     }
-    for (const Key& k : change.keys)
-      if (!found.count(k) && !(k.kind == Key::Kind::x_order && point_rank(k.p, rank) == r && point_rank(k.q, rank) == r))
-        return {};
+    if (found.size() != change.above.size()) return {};
     if (change.tops.empty()) return {};
     // The frontier node above each certificate's node (a transient cell, the
     // leaf beside an endpoint); and no tie at now of the segment's points
@@ -188,7 +194,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
         decided_keys(tree_.nodes[u], a, keys);
         for (const Key& k : keys)
           if (k.kind == Key::Kind::x_order && (change.points.count(k.p) > 0 || change.points.count(k.q) > 0) &&
-              !change.keys.count(k) && asked.insert(k).second && vanishes(k))
+              !change.keys.count(k) && vanishes(k))
             return {};
       }
   }
