@@ -123,7 +123,10 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
         .at_root;
   };
   std::vector<Key> keys;
-  for (auto& [r, change] : changes) {
+  for (auto& group : changes) {
+    // (Named, not bound: lambdas below capture them.)
+    const std::size_t r = group.first;
+    Change& change = group.second;
     const std::size_t s = scene_.priority_order[r];
     const auto feature = [&](const Bsp_node& q) {
       return q.kind == Cut_kind::edge ? change.segments.count(q.segment) > 0 : change.points.count(q.point) > 0;
