@@ -140,6 +140,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // segment's other signs may change now: no certificate tells, and the
     // reroute does not decide them again (below a top it does).
     std::set<Key> found;
+    std::vector<std::size_t> deciding;  // every node where a changed key is decided
     std::vector<std::pair<std::size_t, bool>> stack{{0, false}};  // a node, and whether a top is above it
     while (!stack.empty()) {
       const auto [n, below] = stack.back();
@@ -156,6 +157,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       for (const Key& k : keys)
         if (const Key x = normal(k); change.keys.count(x) > 0) {
           if (change.above.count(x) > 0) found.insert(x);
+          deciding.push_back(n);
           top = !below;
         } else if (!below && vanishes(k)) {
           return {};
@@ -180,24 +182,25 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
         }
         if (feature(q)) continue;
         for (const Site_point& z : change.points)
-          if (point_rank(z, rank) == r && ties(q, z, false)) return {};
+          if (ties(q, z, false)) return {};
         if (point_cut(q) && tie(pred_.side(q.point, s, now_))) return {};
       }
       change.frontiers.insert(frontier);
     }
-    // Another segment's step at a top comparing a point's abscissa with a
-    // changed point's that vanishes now (a point at its abscissa for good,
-    // hidden behind a wall, as in the degenerate family) changes unseen by
-    // any certificate of the set. (A point reaching a changed segment's
-    // line now is an event of its own: its certificates fail too.)
-    for (const std::size_t u : change.tops)
+    // Another segment's step, at any node where a changed key is decided,
+    // whose sign vanishes now (a point at a changed point's abscissa or on a
+    // changed line for good, hidden behind a wall, as in the degenerate
+    // family and the small-integer scenes) changes unseen by any
+    // certificate of the set.
+    std::sort(deciding.begin(), deciding.end());
+    deciding.erase(std::unique(deciding.begin(), deciding.end()), deciding.end());
+    for (const std::size_t u : deciding)
       for (const Arrival& a : log_.at[u]) {
         if (a.segment == s) continue;
         keys.clear();
         decided_keys(tree_.nodes[u], a, keys);
         for (const Key& k : keys)
-          if (k.kind == Key::Kind::x_order && (change.points.count(k.p) > 0 || change.points.count(k.q) > 0) &&
-              !change.keys.count(k) && vanishes(k))
+          if (!change.keys.count(normal(k)) && vanishes(k))
             return {};
       }
   }
