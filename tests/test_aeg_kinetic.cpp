@@ -86,6 +86,18 @@ bool same_log(const Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predicates
   return true;
 }
 
+// After the last batch b of a hand scene: the tree a fresh construction
+// makes at `mid` (after b), its log, the leaf beside every endpoint, and
+// nothing more to fail or found wrong by validation.
+void ends_as_fresh(Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predicates<Exact_kernel>& pred,
+                   const Aeg_kinetic_bsp<Exact_kernel>::Batch& b, const mpq_class& mid) {
+  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mid)).text());
+  CHECK(same_log(run, pred, b.time));
+  for (std::size_t e = 0; e < 2 * pred.size(); ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
+  CHECK_FALSE(run.next_event_time());
+  CHECK(run.validation_failures().empty());
+}
+
 // What side_by_side counts.
 struct Compared {
   std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0, flipped = 0, frontier = 0;
@@ -264,11 +276,7 @@ TEST_CASE("walls crossing: an endpoint whose neighbour ends before it remakes at
                                         endpoint(4)});
   CHECK(b.replays > 0);
   CHECK(b.frontier_replays == b.replays);
-  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
-  CHECK(same_log(run, pred, b.time));
-  for (std::size_t e = 0; e < 6; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
-  CHECK_FALSE(run.next_event_time());
-  CHECK(run.validation_failures().empty());
+  ends_as_fresh(run, pred, b, mpq_class(3, 2));
 }
 
 // The scene of the first test, validated: at t = 1 s1 passes over s0.1 (an
@@ -322,11 +330,7 @@ TEST_CASE("rerouting: two events at one instant in disjoint subtrees remake at t
   CHECK(b.failing.size() == 2);
   CHECK(b.replays == 4);
   CHECK(b.frontier_replays == 4);
-  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
-  CHECK(same_log(run, pred, b.time));
-  for (std::size_t e = 0; e < 16; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
-  CHECK_FALSE(run.next_event_time());
-  CHECK(run.validation_failures().empty());
+  ends_as_fresh(run, pred, b, mpq_class(3, 2));
 }
 
 // Two events at one instant, one inside the other's subtree: the scene of
@@ -351,11 +355,7 @@ TEST_CASE("rerouting: two events at one instant, one below the other, are replay
                                                      endpoint(9)});
   CHECK(b.replays > 0);
   CHECK(b.frontier_replays == 0);
-  CHECK(run.tree().text() == build_cylindrical_bsp(pred, Exact_time(mpq_class(3, 2))).text());
-  CHECK(same_log(run, pred, b.time));
-  for (std::size_t e = 0; e < 10; ++e) CHECK(run.leaf_beside(e) == aeg_leaf(run.edited_tree(), pred, b.time, e));
-  CHECK_FALSE(run.next_event_time());
-  CHECK(run.validation_failures().empty());
+  ends_as_fresh(run, pred, b, mpq_class(3, 2));
 }
 
 // The same event with a point beside it: s1.1 has s2.1's abscissa for good

@@ -440,7 +440,7 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::tops(std::size_t s) const {
 template <class K>
 bool Aeg_kinetic_bsp<K>::ties(const Bsp_node& n, const Site_point& at, bool identities) const {
   const Segment_sign s = n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_);
-  return s.rule != Segment_rule::value && (identities || s.rule != Segment_rule::identity);
+  return tied(s, identities);
 }
 
 template <class K>

@@ -110,17 +110,12 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   if (changes.empty() || (!unchanged.empty() && changes.size() > 1)) return {};
   changes.begin()->second.starts.insert(changes.begin()->second.starts.end(), unchanged.begin(), unchanged.end());
   const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
-  const auto tie = [&](const Segment_sign& s) { return s.rule != Segment_rule::value && s.rule != Segment_rule::identity; };
   // Whether a key's sign may change now: a polynomial deciding it vanishes
   // (not a tie for good that the perturbation decides the same way before
   // and after; order_at of a line with itself is no sign: decided_keys
   // lists it).
   const auto vanishes = [&](const Key& k) {
-    if (k.kind == Key::Kind::order_at && k.i == k.j) return false;
-    return (k.kind == Key::Kind::x_order ? pred_.compare_x(k.p, k.q, now_)
-            : k.kind == Key::Kind::side  ? pred_.side(k.p, k.i, now_)
-                                         : pred_.order_at(k.p, k.i, k.j, now_))
-        .at_root;
+    return !(k.kind == Key::Kind::order_at && k.i == k.j) && pred_.sign_of(k, now_).at_root;
   };
   std::vector<Key> keys;
   for (auto& group : changes) {
@@ -183,7 +178,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
         if (feature(q)) continue;
         for (const Site_point& z : change.points)
           if (ties(q, z, false)) return {};
-        if (point_cut(q) && tie(pred_.side(q.point, s, now_))) return {};
+        if (point_cut(q) && tied(pred_.side(q.point, s, now_), false)) return {};
       }
       change.frontiers.insert(frontier);
     }

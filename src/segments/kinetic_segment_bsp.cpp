@@ -407,10 +407,7 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
       polys = std::move(q);
       sign = s;
     });
-    using Kind = Segment_certificate_key::Kind;
-    if (key.kind == Kind::x_order) pred_.compare_x(key.p, key.q, now_);
-    else if (key.kind == Kind::side) pred_.side(key.p, key.i, now_);
-    else pred_.order_at(key.p, key.i, key.j, now_);
+    pred_.sign_of(key, now_);
     if (sign != c.sign) {
       failing.emplace_back(key, c.nodes);
       certs_.erase(key);

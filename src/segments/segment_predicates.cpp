@@ -196,6 +196,16 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
 }
 
 template <class K>
+Segment_sign Segment_predicates<K>::sign_of(const Segment_certificate_key& key, const Time& t) const {
+  switch (key.kind) {
+    case Segment_certificate_key::Kind::x_order: return compare_x(key.p, key.q, t);
+    case Segment_certificate_key::Kind::side: return side(key.p, key.i, t);
+    case Segment_certificate_key::Kind::order_at: return order_at(key.p, key.i, key.j, t);
+  }
+  throw std::logic_error("sign_of: a key of no kind");
+}
+
+template <class K>
 Segment_sign Segment_predicates<K>::compare_x(const Site_point& a, const Site_point& b, const Time& t) const {
   if (a == b) {
     ++counts_.identity;

@@ -256,6 +256,11 @@ private:
   // sign zero by identity (`at` a crossing on the cut's segment, for good)
   // is no tie.
   bool ties(const Bsp_node& n, const Site_point& at, bool identities) const;
+  // Whether a sign is such a tie: zero at now, decided just after or by the
+  // perturbation (or by identity, with `identities`).
+  static bool tied(const Segment_sign& s, bool identities) {
+    return s.rule != Segment_rule::value && (identities || s.rule != Segment_rule::identity);
+  }
   // The topmost of `top` and its ancestors whose cut `at` meets at now
   // (ties): a change at `at` may cross that cut, as where a crossing born at
   // an endpoint lies on the other side of a wall with the same abscissa.

@@ -175,6 +175,8 @@ public:
   // sign(y_i(x(p)) - y_j(x(p))): the vertical order of the lines of i and j
   // at the abscissa of p; 0 by identity when p lies on both.
   Segment_sign order_at(const Site_point& p, std::size_t i, std::size_t j, const Time& t) const;
+  // The sign of a key's predicate: compare_x, side or order_at by its kind.
+  Segment_sign sign_of(const Segment_certificate_key& key, const Time& t) const;
   // The endpoint of s with the smaller x, and the other one.
   std::size_t left_endpoint(std::size_t s, const Time& t) const;
   std::size_t right_endpoint(std::size_t s, const Time& t) const { return left_endpoint(s, t) ^ 1U; }
