@@ -554,6 +554,15 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
                    "\"nodes\": 19, \"leaves\": 10, \"height\": 7") != std::string::npos);
   CHECK(run("build " + dir + "two-crossing.json --tree").out ==
         "(V s0.0 . (V s0.1 (E s0 (V s1.1 (I s0xs1 . (E s1 . .)) .) (V s1.0 . (I s0xs1 (E s1 . .) .))) .))\n");
+  // The needle turns through vertical at t = 1 (a flip): the tree changes,
+  // the augmented tree (its two vertex cuts one ternary node) does not.
+  const std::string flip = "build " + dir + "turning-vertical.json --time ";
+  CHECK(run(flip + "1/2 --tree").out != run(flip + "3/2 --tree").out);
+  CHECK(run(flip + "1/2 --augmented").out == "(T s0.0 s0.1 . (E s0 . (T s1.0 s1.1 . (E s1 . .) .)) .)\n");
+  CHECK(run(flip + "3/2 --augmented").out == run(flip + "1/2 --augmented").out);
+  const Run boxes = run("build " + std::string(KVD_SOURCE_DIR) + "/data/boxes.json --augmented", "2>&1");
+  CHECK(boxes.status == 2);
+  CHECK(boxes.out.find("--augmented: only for kvd-segments/1 scenes") != std::string::npos);
   // The sinker passes over the floor's right endpoint at t = 3: one edge
   // event, validated against a fresh build; the same in double.
   for (const char* kernel : {"exact", "double"}) {

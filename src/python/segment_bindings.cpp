@@ -13,6 +13,7 @@
 #include "convert.hpp"
 #include "kvd/detail/tree/digest.hpp"
 #include "kvd/kernel/convert.hpp"
+#include "kvd/segments/augmented_bsp.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 #include "kvd/segments/segment_crossings.hpp"
 #include "kvd/segments/segment_io.hpp"
@@ -42,7 +43,9 @@ py::dict build(const Segment_scene& s, const py::handle& t) {
   const mpq_class at = t.is_none() ? s.start : to_mpq(t);
   const Exact_kernel k;
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
-  py::dict d = segment_tree_dict(segments::build_cylindrical_bsp(pred, Exact_time(at)));
+  const segments::Cylindrical_bsp b = segments::build_cylindrical_bsp(pred, Exact_time(at));
+  py::dict d = segment_tree_dict(b);
+  d["augmented"] = segments::augment(b, pred, Exact_time(at)).text();
   d["segments"] = s.segments.size();
   d["crossings"] = segments::count_crossings(s, at);
   return d;
@@ -197,7 +200,8 @@ void bind_segments(py::module_& m) {
   m.def("build_segments", &build, py::arg("scene"), py::arg("t") = py::none(),
         "The cylindrical BSP of the segments just after t (default: the scene's start), exactly (seed 003,\n"
         "section 2.1): its cuts by kind, nodes, leaves, height, the tree as nested parentheses (as kvd build\n"
-        "--tree prints it) and its SHA-256 (structure_hash); segments and crossings at t.");
+        "--tree prints it) and its SHA-256 (structure_hash), the augmented tree of section 3.1.4 (augmented, as\n"
+        "kvd build --augmented prints it); segments and crossings at t.");
   py::class_<Any_segment_kinetic>(m, "KineticSegments", "The kinetic BSP of moving segments (seed 003), stepped batch by batch")
       .def(py::init(&make_kinetic), py::arg("scene"), py::arg("kernel") = "exact", py::arg("events") = 100,
            py::arg("validate") = true, py::arg("update") = "local", py::arg("until") = py::none())

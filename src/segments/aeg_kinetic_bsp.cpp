@@ -14,6 +14,7 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 #include "kvd/segments/aeg_certificates.hpp"
+#include "kvd/segments/augmented_bsp.hpp"
 
 namespace kvd::segments {
 
@@ -601,6 +602,9 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
       failures_.push_back("the tree in force before t = " + k_.to_string(b.time) + " differs from a fresh build at t = " +
                           k_.to_string(mid));
   }
+  // Seed 003's augmented BSP, as the tree in force reads it: flips alone
+  // must leave it as it was (augmented_bsp.hpp).
+  const std::string augmented = validate_ ? augment(tree_, pred_, now_).text() : std::string();
   const auto start = std::chrono::steady_clock::now();
   const std::size_t made = made_;
   // The failing certificates.
@@ -616,6 +620,8 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certificates();
   b.certificates_made = made_ - made;
+  if (validate_ && b.flipped_in_place > 0 && b.replays == 0 && augment(tree_, pred_, now_).text() != augmented)
+    failures_.push_back("the flips turned in place at t = " + k_.to_string(b.time) + " changed the augmented BSP");
   return b;
 }
 

@@ -24,7 +24,7 @@ namespace {
 
 const char* const build_help =
     "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--no-filter]\n"
-    "                 [--bsp] [--tree] [--json]\n"
+    "                 [--bsp] [--tree] [--augmented] [--json]\n"
     "  --no-filter     exact kernel: every sign in exact arithmetic, without the\n"
     "                  interval filter in front (the same tree, slower)\n"
     "\n"
@@ -55,7 +55,12 @@ const char* const build_help =
     "ones the exact kernel's interval filter decided; none with --no-filter),\n"
     "seconds; --tree prints the tree as nested\n"
     "parentheses ((V s3.0 L R) a vertex cut, (I s1xs4 L R) an intersection cut,\n"
-    "(E s2 BELOW ABOVE) an edge cut, . a leaf); --bsp does not apply.\n"
+    "(E s2 BELOW ABOVE) an edge cut, . a leaf); --augmented prints seed 003's\n"
+    "augmented BSP instead (section 3.1.4), which a flip leaves as it was: (T\n"
+    "s3.0 s1xs3 LEFT BETWEEN RIGHT) a ternary node, the two point cuts one\n"
+    "segment puts into one cell, and (I s1xs4 MARKED OTHER) an intersection\n"
+    "cut whose children are the side of the earlier segment's marked endpoint\n"
+    "(endpoint 0) and the other; --bsp does not apply.\n"
     "\n"
     "Exit status: 0 on success, 2 on a bad scene (including triangles that\n"
     "intersect at T) or bad usage.\n";
@@ -113,7 +118,7 @@ int build(Args& args) {
   Scene_args sa;
   sa.wants_time = true;
   std::string kernel = "exact";
-  bool baseline = false, tree_only = false, filter = true;
+  bool baseline = false, tree_only = false, augmented = false, filter = true;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -122,6 +127,7 @@ int build(Args& args) {
     }
     if (a == "--bsp") baseline = true;
     else if (a == "--tree") tree_only = true;
+    else if (a == "--augmented") augmented = true;
     else if (a == "--kernel") kernel = args.value(a);
     else if (a == "--no-filter") filter = false;
     else if (!sa.take(args, a)) args.unknown(a);
@@ -132,8 +138,12 @@ int build(Args& args) {
     if (baseline) triangle_only.push_back("--bsp");
     if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
     refuse_triangle_flags("build", triangle_only);
-    return segment_build(sa, text, kernel, filter, tree_only);
+    return segment_build(sa, text, kernel, filter,
+                         augmented   ? Segment_tree_text::augmented
+                         : tree_only ? Segment_tree_text::tree
+                                     : Segment_tree_text::none);
   }
+  if (augmented) throw Usage_error("kvd build: --augmented: only for kvd-segments/1 scenes");
   const scene::Scene s = sa.read_scene("build", text);
   const scene::Q time = sa.time ? *sa.time : s.start;
   if (baseline) return run_bsp(s, time, sa.json);

@@ -4,6 +4,7 @@
 
 #include "json_out.hpp"
 #include "kvd/kernel/convert.hpp"
+#include "kvd/segments/augmented_bsp.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 #include "kvd/segments/segment_crossings.hpp"
 #include "segment_commands.hpp"
@@ -13,13 +14,14 @@ namespace kvd::cli {
 namespace {
 
 template <class K>
-int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const mpq_class& time, bool tree_only) {
+int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const mpq_class& time, Segment_tree_text tree) {
   const auto start = std::chrono::steady_clock::now();
   const segments::Segment_predicates<K> pred(k, s);
-  const segments::Cylindrical_bsp b = segments::build_cylindrical_bsp(pred, k.time(from_rational<typename K::FT>(time)));
+  const auto t = k.time(from_rational<typename K::FT>(time));
+  const segments::Cylindrical_bsp b = segments::build_cylindrical_bsp(pred, t);
   const std::string secs = seconds_since(start);
-  if (tree_only) {
-    std::cout << b.text() << "\n";
+  if (tree != Segment_tree_text::none) {
+    std::cout << (tree == Segment_tree_text::tree ? b.text() : segments::augment(b, pred, t).text()) << "\n";
     return 0;
   }
   const segments::Bsp_counts c = b.counts();
@@ -58,12 +60,12 @@ void refuse_triangle_flags(const std::string& command, const std::vector<std::st
 }
 
 int segment_build(const Scene_args& sa, const std::string& text, const std::string& kernel, bool filter,
-                  bool tree_only) {
+                  Segment_tree_text tree) {
   const segments::Segment_scene s = sa.read_segments("build", text);
   const mpq_class time = sa.time ? *sa.time : s.start;
   return with_kernel("build", kernel, [&](const auto& k) {
     require_representable(*sa.path, s, k);
-    return run(k, sa, s, time, tree_only);
+    return run(k, sa, s, time, tree);
   }, std::nullopt, filter);
 }
 

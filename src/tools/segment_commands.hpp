@@ -15,8 +15,12 @@
 
 namespace kvd::cli {
 
+// What kvd build prints of a segment scene's tree instead of its counts:
+// nothing, the tree (--tree), or seed 003's augmented form (--augmented).
+enum class Segment_tree_text { none, tree, augmented };
+
 int segment_build(const Scene_args& sa, const std::string& text, const std::string& kernel, bool filter,
-                  bool tree_only);
+                  Segment_tree_text tree);
 
 struct Segment_run_options {
   std::size_t max_events = 100;

@@ -135,6 +135,7 @@ def test_segment_build_agrees_with_kvd_build(name):
     for key in ("segments", "crossings", "vertex_cuts", "intersection_cuts", "edge_cuts", "nodes", "leaves", "height"):
         assert ours[key] == theirs[key], key
     assert ours["tree"] == cli("build", segment_file(name), "--time", "1/3", "--tree").strip()
+    assert ours["augmented"] == cli("build", segment_file(name), "--time", "1/3", "--augmented").strip()
     assert ours["structure_hash"] == hashlib.sha256(ours["tree"].encode()).hexdigest()
 
 
