@@ -20,9 +20,11 @@ namespace {
 
 using Key = Segment_certificate_key;
 
-// The rank of the latest segment a key names: only that segment's steps
-// decide it (a step decides keys of its own segment's points against the
-// cut of an earlier or the same insertion).
+// The rank of the latest segment a key names: in the construction only
+// that segment's steps decide it (a step decides keys of its own segment's
+// points against the cut of an earlier or the same insertion). A
+// certificate's key that no step of it decides is looked for in vain, and
+// the batch is replayed.
 std::size_t latest(const Key& k, const std::vector<std::size_t>& rank) {
   std::size_t r = 0;
   for (const std::size_t s : named_segments(k)) r = std::max(r, rank[s]);
@@ -167,6 +169,9 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // among the keys', or of the segment, with a cut on the path above the
     // frontier but the keys' own: a change there may be another event's.
     for (const std::size_t cell : change.starts) {
+      // A start must lie in a leaf of the tree before the segment, at or
+      // below its frontier (a cell of a cut no earlier than the segment's).
+      if (cut_rank(tree_.nodes[cell], rank) < r) return {};
       std::size_t frontier = cell;
       for (std::int32_t a = parent(cell); a >= 0; a = parent(static_cast<std::size_t>(a))) {
         const auto n = static_cast<std::size_t>(a);
