@@ -25,7 +25,10 @@ namespace {
 template <class K>
 struct Recording {
   const Segment_predicates<K>& pred;
-  Recording(const Segment_predicates<K>& p, typename Segment_predicates<K>::Recorder r) : pred(p) { pred.record(std::move(r)); }
+  Recording(const Segment_predicates<K>& p, typename Segment_predicates<K>::Recorder r, bool polynomials = true)
+      : pred(p) {
+    pred.record(std::move(r), polynomials);
+  }
   ~Recording() { pred.record({}); }
   Recording(const Recording&) = delete;
   Recording& operator=(const Recording&) = delete;
@@ -128,9 +131,10 @@ void Aeg_kinetic_bsp<K>::ask(const Certificate& c, std::size_t index) {
 template <class K>
 typename Aeg_kinetic_bsp<K>::Decided Aeg_kinetic_bsp<K>::signs(const Certificate& c, std::size_t index) {
   Decided out;
-  const Recording recording(pred_, [&](const Segment_certificate_key& key, std::vector<P>&&, std::int32_t, int sign) {
-    out.emplace_back(key, sign);
-  });
+  // Signs only: the filter may decide them.
+  const Recording recording(
+      pred_, [&](const Segment_certificate_key& key, std::vector<P>&&, std::int32_t, int sign) { out.emplace_back(key, sign); },
+      false);
   ask(c, index);
   return out;
 }

@@ -58,7 +58,7 @@ int Segment_filter::sign(const Segment_certificate_key& key, const Exact_time& t
     ++epoch_;
   }
   if (!ti_) return 0;
-  const std::vector<std::size_t> segments = named_segments(key);
+  const auto segments = named_segments(key);
   const filter::Rounding_scope rounding;
   for (const std::size_t s : segments)
     for (const std::size_t e : {2 * s, 2 * s + 1})

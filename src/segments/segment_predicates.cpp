@@ -67,9 +67,9 @@ bool Segment_predicates<K>::vanishes(const P& f) const {
                      [&](const auto& c) { return k_->sign(c) == 0; });
 }
 
-std::vector<std::size_t> named_segments(const Segment_certificate_key& k) {
+boost::container::static_vector<std::size_t, 4> named_segments(const Segment_certificate_key& k) {
   using Kind = Segment_certificate_key::Kind;
-  std::vector<std::size_t> out;
+  boost::container::static_vector<std::size_t, 4> out;
   const auto add = [&](const Site_point& p) {
     if (p.kind == Site_point::Kind::endpoint) return out.push_back(p.a / 2);
     out.push_back(p.a);
@@ -141,12 +141,13 @@ Segment_event event_in_batch(const Segment_certificate_key& k, const std::vector
 template <class K>
 Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const Time& t) const {
   if constexpr (std::is_same_v<K, Exact_kernel>) {
-    // Without a recorder no polynomial is needed: a sign the interval filter
-    // certifies is the value's sign (rule 2).
-    if (filter_ && !recorder_)
+    // Unless a recorder wants them, no polynomial is needed: a sign the
+    // interval filter certifies is the value's sign (rule 2).
+    if (filter_ && !(recorder_ && record_polynomials_))
       if (const int s = filter_->sign(key, t)) {
         ++counts_.value;
         ++counts_.filtered;
+        if (recorder_) recorder_(key, {}, node_, s);
         return {s, Segment_rule::value};
       }
   }

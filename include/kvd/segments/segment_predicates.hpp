@@ -36,6 +36,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <boost/container/static_vector.hpp>
+
 #include "kvd/segments/segment_scene.hpp"
 
 namespace kvd::segments {
@@ -98,8 +100,9 @@ struct Segment_certificate_key_hash {
 };
 
 // The segments a certificate names (its points' segments, and i and j), with
-// repeats; at most five.
-std::vector<std::size_t> named_segments(const Segment_certificate_key& k);
+// repeats; at most four (two crossings, or a crossing and two lines), kept
+// in place: the interval filter asks for them at every sign.
+boost::container::static_vector<std::size_t, 4> named_segments(const Segment_certificate_key& k);
 
 // Names for printing only: "s3.0" (endpoint 0 of segment 3), "s1xs4" (a
 // crossing); a key's kind ("x_order", "side", "order_at") and its features
@@ -189,10 +192,15 @@ public:
   // ε-coefficient that does not vanish, constants left out: the sign stays
   // until one of them changes sign) and the node `at_node` last named (-1:
   // none). A construction reports its complete certificate set this way,
-  // since it branches on nothing else.
+  // since it branches on nothing else. Without `polynomials` the recorder
+  // is given none, and in the exact kernel the interval filter may decide
+  // the sign (for a caller that compares signs, not failure times).
   using Recorder =
       std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node, int sign)>;
-  void record(Recorder r) const { recorder_ = std::move(r); }
+  void record(Recorder r, bool polynomials = true) const {
+    recorder_ = std::move(r);
+    record_polynomials_ = polynomials;
+  }
   void at_node(std::int32_t n) const { node_ = n; }
   // While set, a key it gives a sign for is decided by that sign, reported
   // to the recorder with no polynomial (the caller holds them). Only for the
@@ -206,7 +214,8 @@ public:
 private:
   // The single entry point: the sign of the product of the key's factors
   // (detail/segments/segment_factors.hpp), each decided by rules 2-4; in the
-  // exact kernel without a recorder, first by the interval filter.
+  // exact kernel, unless a recorder wants polynomials, first by the interval
+  // filter.
   Segment_sign decide(const Segment_certificate_key& key, const Time& t) const;
   bool vanishes(const P& f) const;
   void load(std::size_t e, int w);
@@ -218,6 +227,7 @@ private:
   mutable Geometry_cache<P> cache_;
   mutable Segment_rule_counts counts_;
   mutable Recorder recorder_;
+  mutable bool record_polynomials_ = true;
   mutable Held held_;
   mutable std::int32_t node_ = -1;
   std::shared_ptr<detail::Segment_filter> filter_;  // the exact kernel's, unless built without
