@@ -11,7 +11,9 @@ Points are homogeneous (X, Y, W) over Q[t]; a x b is the cross product
 (a1 b2 - a2 b1, a2 b0 - a0 b2, a0 b1 - a1 b0): the line through two points,
 or the meet of two lines.
   endpoint e = 2s + k of segment s: its point3 under the segment's motion,
-    all three coordinates negated when W < 0 at the scene's start;
+    times the least common multiple of its coefficients' denominators (so
+    its coefficients are integers), all three coordinates negated when W < 0
+    at the scene's start;
   perturbed, endpoint e is (X + eps lam_e W, Y + eps lam_e^2 W, W), with
     lam_e = 2 a + 1 + (e mod 2), a = 2 p i + (i^2 mod p), i = e div 2 and p
     the smallest prime >= max(2, n) for n segments;
@@ -152,7 +154,11 @@ class SegmentScene:
                 w = peval(p[2], self.start)
                 if w == 0:
                     raise Invalid(1, sp, "endpoint %d has W = 0 at the start" % k)
-                self.endpoints.append([[-c for c in x] for x in p] if w < 0 else p)
+                den = 1
+                for x in p:
+                    for c in x:
+                        den = lcm(den, c.denominator)
+                self.endpoints.append([[c * den * (-1 if w < 0 else 1) for c in x] for x in p])
         self.n = len(segs)
 
 

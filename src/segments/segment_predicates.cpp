@@ -37,11 +37,21 @@ Segment_predicates<K>::Segment_predicates(const K& k, const Segment_scene& s)
     if (k.filtered()) filter_ = std::make_shared<detail::Segment_filter>(endpoints_);
 }
 
-// Endpoint e from the scene, negated when its W has the sign `w` < 0.
+// Endpoint e from the scene, negated when its W has the sign `w` < 0. In
+// the exact kernel it is scaled by the least common multiple of its
+// coefficients' denominators: a positive constant, so no sign changes, and
+// every polynomial built from it has integer coefficients (Poly's integer
+// path: no gcd).
 template <class K>
 void Segment_predicates<K>::load(std::size_t e, int w) {
   using FT = typename K::FT;
-  const Motion_point3 m = s_->endpoint(e);
+  Motion_point3 m = s_->endpoint(e);
+  if constexpr (std::is_same_v<FT, mpq_class>) {
+    mpz_class den(1);
+    for (const QPoly& c : m)
+      for (const mpq_class& x : c.coefficients()) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), x.get_den_mpz_t());
+    for (QPoly& c : m) c = c * QPoly(mpq_class(den));
+  }
   H<P> p;
   for (std::size_t i = 0; i < 3; ++i) p[i] = poly_from_rational<FT>(w < 0 ? QPoly(-m[i]) : m[i]);
   const mpq_class g(perturbation_lambda(e, s_->segments.size()));
