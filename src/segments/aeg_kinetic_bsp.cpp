@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -599,16 +600,19 @@ std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0, 0, 0};
-  if (validate_) {
+  // Validation's own predicates: its signs are not the run's.
+  const std::optional<Segment_predicates<K>> fresh =
+      validate_ ? std::optional<Segment_predicates<K>>(std::in_place, k_, scene_) : std::nullopt;
+  if (fresh) {
     const Time mid = kinetic::between(k_, now_, b.time);
     ++validations_;
-    if (build_cylindrical_bsp(Segment_predicates<K>(k_, scene_), mid).text() != tree_.text())
+    if (build_cylindrical_bsp(*fresh, mid).text() != tree_.text())
       failures_.push_back("the tree in force before t = " + k_.to_string(b.time) + " differs from a fresh build at t = " +
                           k_.to_string(mid));
   }
   // Seed 003's augmented BSP, as the tree in force reads it: flips alone
   // must leave it as it was (augmented_bsp.hpp).
-  const std::string augmented = validate_ ? augment(tree_, pred_, now_).text() : std::string();
+  const std::string augmented = fresh ? augment(tree_, *fresh, now_).text() : std::string();
   const auto start = std::chrono::steady_clock::now();
   const std::size_t made = made_;
   // The failing certificates.
@@ -624,7 +628,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certificates();
   b.certificates_made = made_ - made;
-  if (validate_ && b.flipped_in_place > 0 && b.replays == 0 && augment(tree_, pred_, now_).text() != augmented)
+  if (fresh && b.flipped_in_place > 0 && augment(tree_, *fresh, now_).text() != augmented)
     failures_.push_back("the flips turned in place at t = " + k_.to_string(b.time) + " changed the augmented BSP");
   return b;
 }

@@ -93,9 +93,13 @@ Augmented_bsp augment(const Cylindrical_bsp& bsp, const Segment_predicates<K>& p
         // child put by the same insertion (it puts at most two there).
         const std::size_t r = point_rank(n.point, rank);
         int d = -1;
-        for (int side = 0; side < 2 && d < 0; ++side) {
+        for (int side = 0; side < 2; ++side) {
           const Bsp_node& c = bsp.nodes[static_cast<std::size_t>(child(n, side))];
-          if (point_cut(c) && point_rank(c.point, rank) == r) d = side;
+          if (!point_cut(c) || point_rank(c.point, rank) != r) continue;
+          if (d >= 0)  // a third point cut of one insertion in one cell: signs that contradict each other
+            throw Bsp_contradiction("augment: both children of the cut through " + point_name(n.point) +
+                                    " are cuts of the same insertion");
+          d = side;
         }
         if (d >= 0) {
           const Bsp_node& c = bsp.nodes[static_cast<std::size_t>(child(n, d))];

@@ -192,9 +192,10 @@ public:
   // ε-coefficient that does not vanish, constants left out: the sign stays
   // until one of them changes sign) and the node `at_node` last named (-1:
   // none). A construction reports its complete certificate set this way,
-  // since it branches on nothing else. Without `polynomials` the recorder
-  // is given none, and in the exact kernel the interval filter may decide
-  // the sign (for a caller that compares signs, not failure times).
+  // since it branches on nothing else. Without `polynomials`, in the exact
+  // kernel, the interval filter may decide the sign first, and the recorder
+  // then gets no polynomial (for a caller that compares signs, not failure
+  // times).
   using Recorder =
       std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node, int sign)>;
   void record(Recorder r, bool polynomials = true) const {
