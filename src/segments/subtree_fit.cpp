@@ -88,8 +88,35 @@ std::vector<std::pair<std::size_t, std::vector<Arrival>>> Subtree_fit<K>::cells_
   return cells;
 }
 
+namespace {
+
+// The steps without the intersection arrivals of a crossing that cannot lie
+// in the cell: the crossing's earlier segment neither walks its edge through
+// the cell nor bounds it. A crossing that goes at this instant, below the
+// frontier the rerouted steps stop at, leaves such arrivals: they were kept
+// to be found below the frontier, and are located by signs that no longer
+// put the crossing on that segment's fragment.
+std::vector<Arrival> in_cell(const std::vector<Arrival>& steps, const Cell& cell) {
+  std::vector<Arrival> out;
+  for (const Arrival& a : steps) {
+    if (a.kind == Arrival::Kind::intersection) {
+      const std::uint32_t j = other_segment(a);
+      const bool on_j = cell.floor == j || cell.roof == j ||
+                        std::any_of(steps.begin(), steps.end(), [&](const Arrival& e) {
+                          return e.kind == Arrival::Kind::edges && e.segment == j;
+                        });
+      if (!on_j) continue;
+    }
+    out.push_back(a);
+  }
+  return out;
+}
+
+}  // namespace
+
 template <class K>
-void Subtree_fit<K>::fit(std::size_t cell, const std::vector<Arrival>& steps, std::vector<std::size_t>& spare) {
+void Subtree_fit<K>::fit(std::size_t cell, const std::vector<Arrival>& all, std::vector<std::size_t>& spare) {
+  const std::vector<Arrival> steps = in_cell(all, tree_.nodes[cell].cell);
   const auto taken = [&](std::vector<std::size_t>::iterator o) {
     tree_.nodes[*o] = Bsp_node{};
     log_.free.push_back(*o);
