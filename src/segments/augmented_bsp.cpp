@@ -78,13 +78,12 @@ Augmented_bsp augment(const Cylindrical_bsp& bsp, const Segment_predicates<K>& p
     const Bsp_node& n = bsp.nodes[task.node];
     Augmented_node a;
     std::vector<std::int32_t> children;  // of B, in the augmented node's order
-    const auto child = [&](const Bsp_node& x, int side) { return x.child[side]; };
     switch (n.kind) {
       case Cut_kind::leaf: break;
       case Cut_kind::edge:
         a.kind = Augmented_kind::edge;
         a.segment = n.segment;
-        children = {child(n, 0), child(n, 1)};
+        children = {n.child[0], n.child[1]};
         break;
       case Cut_kind::vertex:
       case Cut_kind::intersection: {
@@ -94,7 +93,7 @@ Augmented_bsp augment(const Cylindrical_bsp& bsp, const Segment_predicates<K>& p
         const std::size_t r = point_rank(n.point, rank);
         int d = -1;
         for (int side = 0; side < 2; ++side) {
-          const Bsp_node& c = bsp.nodes[static_cast<std::size_t>(child(n, side))];
+          const Bsp_node& c = bsp.nodes[static_cast<std::size_t>(n.child[side])];
           if (!point_cut(c) || point_rank(c.point, rank) != r) continue;
           if (d >= 0)  // a third point cut of one insertion in one cell: signs that contradict each other
             throw Bsp_contradiction("augment: both children of the cut through " + point_name(n.point) +
@@ -102,20 +101,20 @@ Augmented_bsp augment(const Cylindrical_bsp& bsp, const Segment_predicates<K>& p
           d = side;
         }
         if (d >= 0) {
-          const Bsp_node& c = bsp.nodes[static_cast<std::size_t>(child(n, d))];
+          const Bsp_node& c = bsp.nodes[static_cast<std::size_t>(n.child[d])];
           a.kind = Augmented_kind::ternary;
           a.second = c.point;
           a.segment = static_cast<std::uint32_t>(pred.scene().priority_order[r]);
-          children = d == 1 ? std::vector{child(n, 0), child(c, 0), child(c, 1)}
-                            : std::vector{child(c, 0), child(c, 1), child(n, 1)};
+          children = d == 1 ? std::vector{n.child[0], c.child[0], c.child[1]}
+                            : std::vector{c.child[0], c.child[1], n.child[1]};
         } else if (n.kind == Cut_kind::intersection) {
           a.kind = Augmented_kind::intersection;
           a.segment = earlier(n.point, rank);
           const int m = marked_side(pred, a.segment, t);
-          children = {child(n, m), child(n, 1 - m)};
+          children = {n.child[m], n.child[1 - m]};
         } else {
           a.kind = Augmented_kind::vertex;
-          children = {child(n, 0), child(n, 1)};
+          children = {n.child[0], n.child[1]};
         }
         break;
       }
@@ -139,18 +138,21 @@ Cylindrical_bsp expand(const Augmented_bsp& a, const Segment_predicates<K>& pred
     b.nodes.push_back(x);
     return b.nodes.size() - 1;
   };
-  // Cuts the leaf `at` with the vertical line through p: its left and right children.
-  const auto split = [&](std::size_t at, const Site_point& p) {
-    Cell left = b.nodes[at].cell, right = left;
-    left.right = p;
-    right.left = p;
-    const std::size_t l = make(static_cast<std::int32_t>(at), left), r = make(static_cast<std::int32_t>(at), right);
-    Bsp_node& x = b.nodes[at];
-    x.kind = p.kind == Site_point::Kind::endpoint ? Cut_kind::vertex : Cut_kind::intersection;
-    x.point = p;
-    x.child[0] = static_cast<std::int32_t>(l);
-    x.child[1] = static_cast<std::int32_t>(r);
+  // Gives the leaf `at` a cut and two leaf children: those children.
+  const auto cut = [&](std::size_t at, Cut_kind kind, const Site_point& p, std::uint32_t s) {
+    b.nodes[at].kind = kind;
+    b.nodes[at].point = p;
+    b.nodes[at].segment = s;
+    // make may move the nodes: no reference is held across it.
+    const std::size_t l = make(static_cast<std::int32_t>(at), child_cell(b.nodes[at].cell, b.nodes[at], 0));
+    const std::size_t r = make(static_cast<std::int32_t>(at), child_cell(b.nodes[at].cell, b.nodes[at], 1));
+    b.nodes[at].child[0] = static_cast<std::int32_t>(l);
+    b.nodes[at].child[1] = static_cast<std::int32_t>(r);
     return std::array<std::size_t, 2>{l, r};
+  };
+  // Cuts the leaf `at` with the vertical line through p.
+  const auto split = [&](std::size_t at, const Site_point& p) {
+    return cut(at, p.kind == Site_point::Kind::endpoint ? Cut_kind::vertex : Cut_kind::intersection, p, 0);
   };
   make(-1, Cell{});
   std::vector<std::pair<std::size_t, std::size_t>> stack{{0, 0}};  // an augmented node, the leaf of B it fills
@@ -162,17 +164,9 @@ Cylindrical_bsp expand(const Augmented_bsp& a, const Segment_predicates<K>& pred
     switch (n.kind) {
       case Augmented_kind::leaf: break;
       case Augmented_kind::edge: {
-        Cell below = b.nodes[at].cell, above = below;
-        below.roof = n.segment;
-        above.floor = n.segment;
-        const std::size_t l = make(static_cast<std::int32_t>(at), below), u = make(static_cast<std::int32_t>(at), above);
-        Bsp_node& x = b.nodes[at];
-        x.kind = Cut_kind::edge;
-        x.segment = n.segment;
-        x.child[0] = static_cast<std::int32_t>(l);
-        x.child[1] = static_cast<std::int32_t>(u);
-        fill(0, l);
-        fill(1, u);
+        const auto s = cut(at, Cut_kind::edge, {}, n.segment);
+        fill(0, s[0]);
+        fill(1, s[1]);
         break;
       }
       case Augmented_kind::vertex: {

@@ -58,16 +58,8 @@ private:
       case Cell_shape::pinched: fail(n, "its roof meets its floor at both walls"); break;
     }
     if (node.kind == Cut_kind::leaf) return;
-    Cell first = c, second = c;
-    if (node.kind == Cut_kind::edge) {
-      first.roof = node.segment;
-      second.floor = node.segment;
-    } else {
-      first.right = node.point;
-      second.left = node.point;
-    }
-    cells(static_cast<std::size_t>(node.child[0]), first);
-    cells(static_cast<std::size_t>(node.child[1]), second);
+    cells(static_cast<std::size_t>(node.child[0]), child_cell(c, node, 0));
+    cells(static_cast<std::size_t>(node.child[1]), child_cell(c, node, 1));
   }
 
   // A fragment crosses its cell from wall to wall, between floor and roof.

@@ -127,29 +127,26 @@ std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& nod
 template <class K>
 void Bsp_builder<K>::split(std::size_t n, Cut_kind kind, const Site_point& q) {
   if (collect_) return;  // rerouting: the frontier's replay splits
-  Cell left = b_.nodes[n].cell, right = left;
-  left.right = q;
-  right.left = q;
-  const std::size_t l = add_leaf(left, n), r = add_leaf(right, n);
-  Bsp_node& node = b_.nodes[n];
-  node.kind = kind;
-  node.point = q;
-  node.child[0] = static_cast<std::int32_t>(l);
-  node.child[1] = static_cast<std::int32_t>(r);
+  b_.nodes[n].kind = kind;
+  b_.nodes[n].point = q;
+  add_children(n);
 }
 
 template <class K>
 void Bsp_builder<K>::split_edge(std::size_t n, std::uint32_t s) {
   if (collect_) return;
-  Cell below = b_.nodes[n].cell, above = below;
-  below.roof = s;
-  above.floor = s;
-  const std::size_t l = add_leaf(below, n), r = add_leaf(above, n);
-  Bsp_node& node = b_.nodes[n];
-  node.kind = Cut_kind::edge;
-  node.segment = s;
-  node.child[0] = static_cast<std::int32_t>(l);
-  node.child[1] = static_cast<std::int32_t>(r);
+  b_.nodes[n].kind = Cut_kind::edge;
+  b_.nodes[n].segment = s;
+  add_children(n);
+}
+
+template <class K>
+void Bsp_builder<K>::add_children(std::size_t n) {
+  // add_leaf may move the nodes: no reference is held across it.
+  const std::size_t l = add_leaf(child_cell(b_.nodes[n].cell, b_.nodes[n], 0), n);
+  const std::size_t r = add_leaf(child_cell(b_.nodes[n].cell, b_.nodes[n], 1), n);
+  b_.nodes[n].child[0] = static_cast<std::int32_t>(l);
+  b_.nodes[n].child[1] = static_cast<std::int32_t>(r);
 }
 
 template <class K>

@@ -185,10 +185,8 @@ void Subtree_fit<K>::refresh_cells(std::size_t v) {
     const Bsp_node& node = tree_.nodes[stack.back()];
     stack.pop_back();
     if (node.kind == Cut_kind::leaf) continue;
-    for (const std::size_t side : {0, 1}) {
-      Cell c = node.cell;
-      if (node.kind == Cut_kind::edge) (side ? c.floor : c.roof) = node.segment;
-      else (side ? c.left : c.right) = node.point;
+    for (const int side : {0, 1}) {
+      const Cell c = child_cell(node.cell, node, side);
       Bsp_node& child = tree_.nodes[static_cast<std::size_t>(node.child[side])];
       if (child.cell == c) continue;
       child.cell = c;

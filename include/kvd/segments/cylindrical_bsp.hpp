@@ -53,6 +53,15 @@ struct Bsp_node {
 // intersection cut).
 inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
 
+// The cell of child `side` of a cut (0: left or below, 1: right or above)
+// whose own cell is `c`: the cut's line becomes the child's wall, floor or
+// roof.
+inline Cell child_cell(Cell c, const Bsp_node& cut, int side) {
+  if (cut.kind == Cut_kind::edge) (side ? c.floor : c.roof) = cut.segment;
+  else (side ? c.left : c.right) = cut.point;
+  return c;
+}
+
 struct Bsp_counts {
   std::size_t vertex_cuts = 0, intersection_cuts = 0, edge_cuts = 0;
   std::size_t nodes = 0, leaves = 0;

@@ -136,6 +136,8 @@ private:
   std::size_t add_leaf(const Cell& c, std::size_t parent);
   void split(std::size_t n, Cut_kind kind, const Site_point& q);
   void split_edge(std::size_t n, std::uint32_t s);
+  // Gives node n, its cut set, two leaves with the cells the cut makes.
+  void add_children(std::size_t n);
   void arrive(std::size_t n, const Arrival& a);
   std::size_t locate(std::size_t from, const Arrival& a);
   std::size_t step(std::size_t n, const Arrival& a) const;
