@@ -14,6 +14,7 @@ cd "$root"
 "$kvd" bench update --out data/bench
 "$kvd" bench cost --out data/bench
 "$kvd" bench aeg --out data/bench
+"$kvd" bench aeg-cost --out data/bench
 # Beside kvd in a build with CGAL (the default): our isolator against CGAL's.
 "$(dirname "$kvd")/kvd_bench_next_root" --degrees 1,2,4,6,8 --bits 64,200 --count 1000 --out data/bench
 python3 data/bench/splice.py

@@ -83,20 +83,6 @@ const char* const aeg_help =
     "Exit status: 0 on success, 1 when the updates differ,\n"
     "2 on bad input.\n";
 
-segments::Segment_scene generated_segments(Segment_family family, std::size_t n, std::size_t m, Crossings crossings) {
-  segments::Segment_generator_options o;
-  o.family = family;
-  o.n = n;
-  o.seed = 1;
-  o.crossings = crossings;
-  o.moving = m;
-  try {
-    return segments::generate_segments(o);
-  } catch (const scene::Generator_error& e) {
-    throw cli::Usage_error("kvd bench aeg: generating " + std::to_string(n) + " segments: " + e.what());
-  }
-}
-
 // The build at the scene's start in ms, and the tree's counts.
 template <class K>
 std::pair<double, segments::Bsp_counts> build(const K& k, const segments::Segment_scene& s) {
@@ -111,7 +97,7 @@ Static_row measure_static(std::size_t n, Crossings crossings, const Config& c) {
   Static_row row;
   row.crossings = crossings == Crossings::linear ? "linear" : "quadratic";
   row.n = n;
-  const segments::Segment_scene s = generated_segments(Segment_family::random, n, 0, crossings);
+  const segments::Segment_scene s = generated_segments("aeg", Segment_family::random, n, 0, crossings);
   row.k = segments::count_crossings(s, s.start);
   std::vector<double> exact, dbl;
   for (int r = 0; r < c.repeats; ++r) {
@@ -141,7 +127,7 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   row.crossings = crossings == Crossings::linear ? "linear" : "quadratic";
   row.n = n;
   row.m = m;
-  const segments::Segment_scene s = generated_segments(family, n, m, crossings);
+  const segments::Segment_scene s = generated_segments("aeg", family, n, m, crossings);
   row.k = segments::count_crossings(s, s.start);
   using Kinetic = segments::Kinetic_segment_bsp<Exact_kernel>;
   const Exact_kernel k;

@@ -16,5 +16,8 @@ int update(cli::Args& args);
 int cost(cli::Args& args);
 // kvd bench aeg: the cylindrical BSP of segments (seed 003) against its bounds.
 int aeg(cli::Args& args);
+// kvd bench aeg-cost: the cost of an event of the kinetic BSP of segments
+// against n, in signs decided and nodes made.
+int aeg_cost(cli::Args& args);
 
 }  // namespace kvd::bench

@@ -5,6 +5,7 @@
 
 #include "cli.hpp"
 #include "kvd/scene/generators.hpp"
+#include "kvd/segments/segment_generators.hpp"
 
 namespace kvd::bench {
 
@@ -35,6 +36,21 @@ scene::Scene generated(const std::string& suite, const std::string& family, std:
   } catch (const scene::Generator_error& e) {
     throw cli::Usage_error("kvd bench " + suite + ": generating " + family + " " + std::to_string(size) + ": " +
                            e.what());
+  }
+}
+
+segments::Segment_scene generated_segments(const std::string& suite, segments::Segment_family family, std::size_t n,
+                                           std::size_t m, segments::Crossings crossings) {
+  segments::Segment_generator_options o;
+  o.family = family;
+  o.n = n;
+  o.seed = 1;
+  o.crossings = crossings;
+  o.moving = m;
+  try {
+    return segments::generate_segments(o);
+  } catch (const scene::Generator_error& e) {
+    throw cli::Usage_error("kvd bench " + suite + ": generating " + std::to_string(n) + " segments: " + e.what());
   }
 }
 

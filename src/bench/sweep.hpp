@@ -1,6 +1,8 @@
 // What the bench suites share: the --out folder; and for those that sweep
-// the number of triangles, the --sizes option and the scenes generated for a size as `kvd generate
-// FAMILY --triangles N --moving F --degree D --seed 1` makes them.
+// the number of triangles or segments, the --sizes option and the scenes
+// generated for a size as `kvd generate FAMILY --triangles N --moving F
+// --degree D --seed 1` (or `segments-FAMILY --n N --moving M --seed 1`)
+// makes them.
 #pragma once
 
 #include <chrono>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "kvd/scene/scene.hpp"
+#include "kvd/segments/segment_generators.hpp"
 
 namespace kvd::bench {
 
@@ -20,6 +23,10 @@ std::vector<std::size_t> sizes_option(const std::string& suite, const std::strin
 // The uniform-scale or uniform-density scene of `size` triangles, seed 1.
 scene::Scene generated(const std::string& suite, const std::string& family, std::size_t size, const scene::Q& moving,
                        int degree);
+
+// The generated segment scene of n segments, m of them moving, seed 1.
+segments::Segment_scene generated_segments(const std::string& suite, segments::Segment_family family, std::size_t n,
+                                           std::size_t m, segments::Crossings crossings);
 
 // Milliseconds from `start` to now (steady clock).
 inline double ms_since(std::chrono::steady_clock::time_point start) {

@@ -631,10 +631,13 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
     augmented = augment(tree_, *fresh, now_).text();
     aside = std::chrono::steady_clock::now() - t0;
   }
+  const Segment_rule_counts signs = pred_.counts();
   now_ = b.time;
   update(entries, b);
   next_event_time();  // up to the next queue minimum: stale entries off the heap
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start - aside).count();
+  b.signs = pred_.counts().decided() - signs.decided();
+  b.held = pred_.counts().held - signs.held;
   b.certificates = certificates();
   b.certificates_made = made_ - made;
   if (fresh && flips && b.flipped_in_place > 0 && augment(tree_, *fresh, now_).text() != augmented)

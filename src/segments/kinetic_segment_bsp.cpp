@@ -84,7 +84,8 @@ void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vec
 
 // The index may hold keys of certificates gone since (set_motion skips and
 // drops them); when it holds twice as many keys as there are certificates,
-// it is made again from the certificates, so its size stays within a
+// those in limbo counted (an update that forgets a large subtree moves most
+// of them there), it is made again from both, so its size stays within a
 // constant of theirs at a constant amortized cost per certificate made.
 template <class K>
 void Kinetic_segment_bsp<K>::index(const Segment_certificate_key& key) {
@@ -92,7 +93,7 @@ void Kinetic_segment_bsp<K>::index(const Segment_certificate_key& key) {
   const auto add = [&](const Segment_certificate_key& k) {
     for (const std::size_t s : named_segments(k)) by_segment_[s].insert(k);
   };
-  if (++indexed_ <= 2 * certs_.size() + 64) return add(key);
+  if (++indexed_ <= 2 * (certs_.size() + limbo_.size()) + 64) return add(key);
   for (auto& keys : by_segment_) keys.clear();
   indexed_ = 0;
   for (const auto* m : {&certs_, &limbo_})
@@ -283,12 +284,15 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   const std::vector<std::size_t> turning = turning_segments(b.failing);
   for (const auto& key : b.failing) ++b.events[static_cast<std::size_t>(event_in_batch(key, scene_.rank, turning))];
   const auto start = std::chrono::steady_clock::now();
+  const Segment_rule_counts signs = pred_.counts();
   now_ = t;
   // The failing certificates go first: those decided again get a new failure time.
   for (const auto& key : b.failing) certs_.erase(key);
   b.changed = guarded([&] { b.changed = update(failing, b); }) || b.changed;
   next_event_time();  // up to the next queue minimum: stale entries off the heap
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  b.signs = pred_.counts().decided() - signs.decided();
+  b.held = pred_.counts().held - signs.held;
   b.certificates = certs_.size();
   return b;
 }

@@ -16,6 +16,7 @@ const char* const bench_help =
     "  update     the local update against the rebuild (thesis chapter 7)\n"
     "  cost       exact against double, the interval filter, next_root\n"
     "  aeg        the BSP of segments against the bounds of seed 003\n"
+    "  aeg-cost   the cost of an event of the kinetic BSP of segments against n\n"
     "\n"
     "Every suite takes --help. Timings are medians of one run on this machine;\n"
     "nothing is asserted about them.\n";
@@ -34,6 +35,7 @@ int bench(Args& args) {
   if (suite == "update") return kvd::bench::update(rest);
   if (suite == "cost") return kvd::bench::cost(rest);
   if (suite == "aeg") return kvd::bench::aeg(rest);
+  if (suite == "aeg-cost") return kvd::bench::aeg_cost(rest);
   throw Usage_error("kvd bench: unknown suite '" + suite + "' (see kvd bench --help)");
 }
 

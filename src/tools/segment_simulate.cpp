@@ -26,8 +26,9 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
   if (kin.stuck()) stopped = "stuck";
   std::array<std::size_t, 4> events{}, changed_by{};
   std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
-  std::vector<double> ms, rebuilt;
+  std::vector<double> ms, rebuilt, signs;
   for (const auto& b : batches) {
+    signs.push_back(static_cast<double>(b.signs));
     frontier += b.frontier_replays;
     subtree += b.subtree_replays;
     rebuilt.push_back(static_cast<double>(b.nodes_rebuilt));
@@ -59,6 +60,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
                         {"failing", b.failing.size()}, {"events", kinds}, {"changed", b.changed},
                         {"certificates", b.certificates}, {"nodes_rebuilt", b.nodes_rebuilt},
                         {"frontier_replays", b.frontier_replays}, {"subtree_replays", b.subtree_replays},
+                        {"signs", b.signs}, {"held", b.held},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
     Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
@@ -71,7 +73,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
                              {"max", decimal(fixed(max, 3))}}},
               {"update", segments::segment_update_names[static_cast<int>(o.update)]},
-              {"nodes_rebuilt_median", median(rebuilt)},
+              {"nodes_rebuilt_median", median(rebuilt)}, {"signs_median", median(signs)},
               {"replays", {{"frontier", frontier}, {"subtree", subtree}}}, {"filter", filter_json(k)},
               {"recovery", recovery_json(kin.recovery())}};
     if (o.list) j["batch_list"] = list;
@@ -95,7 +97,8 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << kin.certificates()
               << " certificates\nupdate (ms):   mean " << fixed(mean, 3) << ", median " << fixed(median(ms), 3)
               << ", max " << fixed(max, 3) << "\nnodes made:    median " << median(rebuilt) << " a batch ("
-              << segments::segment_update_names[static_cast<int>(o.update)] << ")\n";
+              << segments::segment_update_names[static_cast<int>(o.update)] << ")\nsigns decided: median "
+              << median(signs) << " a batch\n";
     if (o.update != segments::Segment_update::rebuild)
       std::cout << "replays:       " << frontier << " at the frontier, " << subtree << " of whole subtrees\n";
     if (kin.recovery().detected()) std::cout << "recovery:      " << recovery_text(kin.recovery()) << "\n";

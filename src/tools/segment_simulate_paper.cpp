@@ -31,8 +31,9 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   std::size_t failures = 0, changed = 0, simultaneous = 0;
   std::size_t replays = 0, frontier = 0, flipped = 0;
   std::array<std::size_t, 3> by_kind{};
-  std::vector<double> ms, made, certified;
+  std::vector<double> ms, made, certified, signs;
   for (const Run::Batch& b : batches) {
+    signs.push_back(static_cast<double>(b.signs));
     failures += b.failing.size();
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
@@ -63,7 +64,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", run.certificates()},
               {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
                              {"max", decimal(fixed(max, 3))}}},
-              {"nodes_rebuilt_median", median(made)}, {"replays", replays}, {"frontier_replays", frontier},
+              {"nodes_rebuilt_median", median(made)}, {"signs_median", median(signs)}, {"replays", replays}, {"frontier_replays", frontier},
               {"flips_in_place", flipped},
               {"certificates_made", {{"mean", decimal(fixed(certified_mean, 2))}, {"median", median(certified)},
                                      {"max", static_cast<std::size_t>(certified_max)}}}};
@@ -76,7 +77,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
                         {"failing", failing}, {"changed", b.changed}, {"certificates", b.certificates},
                         {"replays", b.replays}, {"frontier_replays", b.frontier_replays}, {"nodes_rebuilt", b.nodes_rebuilt},
                         {"flipped_in_place", b.flipped_in_place}, {"nodes_edited", b.nodes_edited},
-                        {"certificates_made", b.certificates_made},
+                        {"certificates_made", b.certificates_made}, {"signs", b.signs}, {"held", b.held},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
       j["batch_list"] = list;
@@ -102,7 +103,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               << ", max " << fixed(max, 3) << "\nnodes made:    median " << median(made) << " a batch (" << replays
               << " subtrees replayed, " << flipped << " flips done in place)\ncertificates made: median "
               << median(certified) << ", mean " << fixed(certified_mean, 2) << ", max " << certified_max
-              << " a batch\n";
+              << " a batch\nsigns decided: median " << median(signs) << " a batch\n";
   }
   for (const auto& f : run.validation_failures()) std::cerr << "kvd simulate: validation failed: " << f << "\n";
   return run.validation_failures().empty() ? 0 : 1;

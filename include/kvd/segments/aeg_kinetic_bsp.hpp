@@ -105,6 +105,7 @@ public:
     std::size_t nodes_edited = 0;             // nodes whose children, cell or log those edits changed
     std::size_t certificates_made = 0;        // made again (computed, not kept), the failing ones included
     double update_seconds = 0;                // the tree and its certificates made again
+    long signs = 0, held = 0;                 // decided by the update, and read from certificates in force
   };
 
   // The scene is copied; the run starts at its start. With `validate`, the

@@ -91,6 +91,9 @@ public:
     // flip's remade as frontier nodes included), and those whose subtree was
     // replayed whole (local and subtree updates).
     std::size_t frontier_replays = 0, subtree_replays = 0;
+    // The signs the update decided, and those it read from the certificates
+    // in force (rule held): its cost in predicates, the same on any machine.
+    long signs = 0, held = 0;
   };
 
   // The scene is copied. With `validate`, the tree in force is compared,

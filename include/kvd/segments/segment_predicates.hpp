@@ -146,6 +146,8 @@ struct Segment_rule_counts {
   long identity = 0, value = 0, after = 0, perturbation = 0;
   long filtered = 0;  // of `value`, decided by the exact kernel's interval filter
   long held = 0;      // taken from a certificate in force (Segment_predicates::held)
+  // The signs decided by any rule but `held`.
+  long decided() const { return identity + value + after + perturbation; }
 };
 
 // The lines of the segments and the crossings of two, made once.

@@ -1,0 +1,155 @@
+// kvd bench aeg-cost: the cost of an event of the kinetic BSP of segments
+// (seed 003, section 3.1) against n, counted in what does not depend on the
+// machine (the signs an update decides, the nodes it makes again) beside its
+// time: the local update on the kept certificate set, and the run on the
+// paper's set. Generated segments-random scenes, seed 1, all and half
+// moving. Writes aeg-cost.csv, aeg-cost.md and, with gnuplot, aeg-cost.svg.
+#include "aeg_cost.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numeric>
+
+#include "bench.hpp"
+#include "cli.hpp"
+#include "gnuplot.hpp"
+#include "kvd/kernel/exact_kernel.hpp"
+#include "kvd/segments/aeg_kinetic_bsp.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
+#include "kvd/segments/segment_crossings.hpp"
+#include "report.hpp"
+#include "sweep.hpp"
+
+namespace kvd::bench {
+
+namespace {
+
+using namespace aeg_cost_suite;
+
+const char* const aeg_cost_help =
+    "usage: kvd bench aeg-cost [--sizes N,N,...] [--events N] [--out DIR]\n"
+    "\n"
+    "The cost of an event of the kinetic BSP of segments (seed 003, section\n"
+    "3.1) against n, on kvd generate segments-random --n N --moving M --seed 1\n"
+    "(M = N and N/2), exact kernel, up to the batch holding the N-th\n"
+    "certificate failure (--events, default 2000), without validation. Two\n"
+    "runs of each scene: the local update on the kept certificate set (one\n"
+    "certificate per sign of the construction), and the run on the paper's\n"
+    "certificates (transient cells, endpoints' neighbours, flips). Per batch:\n"
+    "the signs the update decided (by the filter, exactly or by the\n"
+    "perturbation), the signs it read from the certificates in force, the\n"
+    "nodes it made again, and its time. The counts are the same on any\n"
+    "machine; the times are this one's.\n"
+    "\n"
+    "Writes aeg-cost.csv, aeg-cost.md and, when gnuplot is installed,\n"
+    "aeg-cost.svg (the plot's data in aeg-cost.dat) to --out.\n"
+    "\n"
+    "options:\n"
+    "  --sizes            segments (default 100,200,400,800,1600,3200,6400,12800)\n"
+    "  --events N         failures per run (default 2000)\n"
+    "  --out              the output directory (default bench-out), created if\n"
+    "                     needed\n"
+    "\n"
+    "Exit status: 0 on success, 2 on bad input.\n";
+
+double mean(const std::vector<double>& v) {
+  return v.empty() ? 0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+double max(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
+// The smallest value at or above 90% of the batches.
+double p90(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(std::ceil(0.9 * static_cast<double>(v.size()))) - 1];
+}
+
+// `run` advanced up to the batch holding the `events`-th failure, or the
+// span's end; the row's run, n, m, k and nodes are the caller's.
+template <class Run>
+void measure(Run& run, std::size_t events, const std::string& label, Run_row& row) {
+  const auto progress = cli::progress_every_few_seconds(label);
+  std::vector<double> signs, held, made, ms;
+  while (row.failures < events && run.next_event_time()) {
+    const auto b = run.advance();
+    ++row.batches;
+    row.failures += b.failing.size();
+    signs.push_back(static_cast<double>(b.signs));
+    held.push_back(static_cast<double>(b.held));
+    made.push_back(static_cast<double>(b.nodes_rebuilt));
+    ms.push_back(1e3 * b.update_seconds);
+    progress(row.batches, row.failures);
+  }
+  row.signs_median = cli::median(signs);
+  row.signs_mean = mean(signs);
+  row.signs_p90 = p90(signs);
+  row.signs_max = max(signs);
+  row.held_mean = mean(held);
+  row.nodes_made_median = cli::median(made);
+  row.nodes_made_mean = mean(made);
+  row.nodes_made_max = max(made);
+  row.mean_ms = mean(ms);
+  row.median_ms = cli::median(ms);
+  row.max_ms = max(ms);
+  std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, signs decided a batch: mean "
+            << cli::fixed(row.signs_mean, 1) << ", nodes made: mean " << cli::fixed(row.nodes_made_mean, 1) << ", "
+            << cli::fixed(row.mean_ms, 3) << " ms\n";
+}
+
+std::vector<Run_row> measure_scene(std::size_t n, std::size_t m, const Config& c) {
+  const segments::Segment_scene s =
+      generated_segments("aeg-cost", segments::Segment_family::random, n, m, segments::Crossings::linear);
+  const Exact_kernel k;
+  Run_row base;
+  base.n = n;
+  base.m = m;
+  base.k = segments::count_crossings(s, s.start);
+  const std::string label = "kvd bench aeg-cost: n = " + std::to_string(n) + ", m = " + std::to_string(m);
+  std::vector<Run_row> rows(2, base);
+  {
+    segments::Kinetic_segment_bsp<Exact_kernel> local(k, s, false, segments::Segment_update::local);
+    rows[0].run = "local";
+    rows[0].nodes = local.tree().counts().nodes;
+    measure(local, c.events, label + ", local update", rows[0]);
+  }
+  segments::Aeg_kinetic_bsp<Exact_kernel> paper(k, s, false);
+  rows[1].run = "paper";
+  rows[1].nodes = paper.tree().counts().nodes;
+  measure(paper, c.events, label + ", the paper's set", rows[1]);
+  return rows;
+}
+
+}  // namespace
+
+int aeg_cost(cli::Args& args) {
+  Config c;
+  while (!args.done()) {
+    const std::string& a = args.next();
+    if (a == "--help" || a == "-h") {
+      std::cout << aeg_cost_help;
+      return 0;
+    }
+    if (a == "--sizes") c.sizes = sizes_option("aeg-cost", args.value(a), a, "segments");
+    else if (a == "--events") c.events = args.unsigned_value(a);
+    else if (a == "--out") c.out = args.value(a);
+    else args.unknown(a);
+  }
+  check_out("aeg-cost", c.out);
+  make_out("aeg-cost", c.out);
+  std::vector<Run_row> rows;
+  for (const std::size_t n : c.sizes)
+    for (const std::size_t m : {n, n / 2})
+      if (m > 0)
+        for (Run_row& r : measure_scene(n, m, c)) rows.push_back(std::move(r));
+  cli::write_atomically("bench aeg-cost", c.out + "/aeg-cost.csv", csv(rows));
+  cli::write_atomically("bench aeg-cost", c.out + "/aeg-cost.dat", plot_data(c, rows));
+  const bool plotted = run_gnuplot("aeg-cost", c.out + "/aeg-cost.gp", gnuplot_script(c), {c.out + "/aeg-cost.svg"});
+  const std::string md = markdown(c, rows, plotted);
+  cli::write_atomically("bench aeg-cost", c.out + "/aeg-cost.md", md);
+  std::cout << md;
+  std::cerr << "kvd bench aeg-cost: wrote " << c.out << "/aeg-cost.md, " << c.out << "/aeg-cost.csv"
+            << (plotted ? ", " + c.out + "/aeg-cost.svg" : std::string()) << "\n";
+  return 0;
+}
+
+}  // namespace kvd::bench

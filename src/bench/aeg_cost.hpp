@@ -1,0 +1,37 @@
+// kvd bench aeg-cost: the runs it makes (aeg_cost.cpp), and their report
+// (aeg_cost_report.cpp).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace kvd::bench::aeg_cost_suite {
+
+// One run over the first failures of one scene: its cost per batch in
+// signs decided, nodes made and time.
+struct Run_row {
+  std::string run;  // "local": the kept set's local update; "paper": the run on the paper's certificates
+  std::size_t n = 0, m = 0, k = 0;  // segments, moving ones, crossings at the start
+  std::size_t nodes = 0;            // the tree's at the start
+  std::size_t batches = 0, failures = 0;
+  // Per batch: the signs the update decided (every rule but held), those it
+  // read from the certificates in force (held), the nodes it made again.
+  double signs_median = 0, signs_mean = 0, signs_p90 = 0, signs_max = 0, held_mean = 0;
+  double nodes_made_median = 0, nodes_made_mean = 0, nodes_made_max = 0;
+  double mean_ms = 0, median_ms = 0, max_ms = 0;
+};
+
+struct Config {
+  std::vector<std::size_t> sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};
+  std::size_t events = 2000;
+  std::string out = "bench-out";
+};
+
+std::string csv(const std::vector<Run_row>& rows);
+std::string markdown(const Config& c, const std::vector<Run_row>& rows, bool plotted);
+// The plot's data (aeg-cost.dat) and the gnuplot script writing aeg-cost.svg.
+std::string plot_data(const Config& c, const std::vector<Run_row>& rows);
+std::string gnuplot_script(const Config& c);
+
+}  // namespace kvd::bench::aeg_cost_suite

@@ -1,0 +1,117 @@
+// The report of kvd bench aeg-cost: CSV, Markdown and the plot of the cost
+// per batch against n.
+#include <cmath>
+
+#include "aeg_cost.hpp"
+#include "gnuplot.hpp"
+#include "report.hpp"
+
+namespace kvd::bench::aeg_cost_suite {
+
+namespace {
+
+const Run_row* find(const std::vector<Run_row>& rows, const std::string& run, std::size_t n, std::size_t m) {
+  for (const Run_row& r : rows)
+    if (r.run == run && r.n == n && r.m == m) return &r;
+  return nullptr;
+}
+
+double log2n(const Run_row& r) { return std::log2(static_cast<double>(r.n)); }
+
+std::string table(const std::vector<Run_row>& rows, const std::string& run) {
+  std::string out =
+      "| n | m | k | tree nodes | batches | signs decided: mean | median | p90 | max | mean / log2 n | signs held: "
+      "mean | nodes made: mean | median | max | ms: mean | median | max |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Run_row& r : rows)
+    if (r.run == run)
+      out += "| " + std::to_string(r.n) + " | " + std::to_string(r.m) + " | " + std::to_string(r.k) + " | " +
+             std::to_string(r.nodes) + " | " + std::to_string(r.batches) + " | " + cli::fixed(r.signs_mean, 1) +
+             " | " + cli::fixed(r.signs_median, 0) + " | " + cli::fixed(r.signs_p90, 0) + " | " +
+             cli::fixed(r.signs_max, 0) + " | " + cli::fixed(r.signs_mean / log2n(r), 2) + " | " +
+             cli::fixed(r.held_mean, 1) + " | " + cli::fixed(r.nodes_made_mean, 1) + " | " +
+             cli::fixed(r.nodes_made_median, 0) + " | " + cli::fixed(r.nodes_made_max, 0) + " | " +
+             cli::fixed(r.mean_ms, 3) + " | " + cli::fixed(r.median_ms, 3) + " | " + cli::fixed(r.max_ms, 1) + " |\n";
+  return out;
+}
+
+}  // namespace
+
+std::string csv(const std::vector<Run_row>& rows) {
+  std::string out =
+      "run,n,m,k,nodes,batches,failures,signs_median,signs_mean,signs_p90,signs_max,held_mean,nodes_made_median,"
+      "nodes_made_mean,nodes_made_max,mean_ms,median_ms,max_ms\n";
+  for (const Run_row& r : rows)
+    out += r.run + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," + std::to_string(r.k) + "," +
+           std::to_string(r.nodes) + "," + std::to_string(r.batches) + "," + std::to_string(r.failures) + "," +
+           cli::approx(r.signs_median) + "," + cli::fixed(r.signs_mean, 3) + "," + cli::approx(r.signs_p90) + "," +
+           cli::approx(r.signs_max) + "," + cli::fixed(r.held_mean, 3) + "," + cli::approx(r.nodes_made_median) +
+           "," + cli::fixed(r.nodes_made_mean, 3) + "," + cli::approx(r.nodes_made_max) + "," +
+           cli::fixed(r.mean_ms, 4) + "," + cli::fixed(r.median_ms, 4) + "," + cli::fixed(r.max_ms, 3) + "\n";
+  return out;
+}
+
+std::string markdown(const Config& c, const std::vector<Run_row>& rows, bool plotted) {
+  const std::string setting =
+      "`kvd generate segments-random --n N --moving M --seed 1` (short segments, k = O(n); M = N and N/2), exact "
+      "kernel, no validation, up to the batch holding the " +
+      std::to_string(c.events) +
+      "th certificate failure. Per batch: the signs the update decided (by the interval filter, exactly, or by the "
+      "perturbation), the signs it read from the certificates in force (rule *held*), the nodes it made again, and "
+      "its time in ms (this machine's). The counts do not depend on the machine.\n\n";
+  std::string out = "## The local update on the kept set\n\n" + setting +
+                    "The kept set holds a certificate for every sign of the construction, so an update reads the "
+                    "signs of the certificates in force instead of deciding them.\n\n" +
+                    table(rows, "local") +
+                    "\n## The run on the paper's set\n\n" + setting +
+                    "The paper's set holds only the transient cells, the endpoints' neighbours and the flips, so "
+                    "an update decides at the instant the signs it reads, and those its guards ask (which segment's "
+                    "steps changed, and that no other sign vanishes there).\n\n" +
+                    table(rows, "paper");
+  if (plotted)
+    out += "\n## Plot\n\nMean signs decided and nodes made per batch against n (log scale in n: a straight line is "
+           "growth in log n).\n\n![cost per batch against n](aeg-cost.svg)\n";
+  return out;
+}
+
+std::string plot_data(const Config& c, const std::vector<Run_row>& rows) {
+  std::string out =
+      "# n; mean signs decided a batch: local m = n, local m = n/2, paper m = n, paper m = n/2; mean signs held: "
+      "local m = n, local m = n/2; mean nodes made: local m = n, local m = n/2, paper m = n, paper m = n/2 (NaN: "
+      "not run)\n";
+  const auto value = [&](const std::string& run, std::size_t n, std::size_t m, double Run_row::*field) {
+    const Run_row* r = find(rows, run, n, m);
+    return r ? cli::approx(r->*field) : std::string("NaN");
+  };
+  for (const std::size_t n : c.sizes) {
+    out += std::to_string(n);
+    for (double Run_row::*field : {&Run_row::signs_mean, &Run_row::held_mean, &Run_row::nodes_made_mean})
+      for (const char* run : {"local", "paper"}) {
+        if (field == &Run_row::held_mean && std::string(run) == "paper") continue;  // the paper's set holds none
+        for (const std::size_t m : {n, n / 2}) out += " " + value(run, n, m, field);
+      }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string gnuplot_script(const Config& c) {
+  Line_plot signs, nodes;
+  for (Line_plot* p : {&signs, &nodes}) {
+    p->xlabel = "segments (log)";
+    p->sizes = c.sizes;
+    p->data = c.out + "/aeg-cost.dat";
+  }
+  signs.title = "Signs per batch, first " + std::to_string(c.events) + " failures";
+  signs.ylabel = "signs per batch (log)";
+  signs.series = {"decided: local, m = n",  "decided: local, m = n/2", "decided: paper, m = n",
+                  "decided: paper, m = n/2", "held: local, m = n", "held: local, m = n/2"};
+  nodes.title = "Nodes made again per batch";
+  nodes.ylabel = "nodes per batch";
+  nodes.log_y = false;
+  nodes.first_column = 8;
+  nodes.series = {"local, m = n", "local, m = n/2", "paper, m = n", "paper, m = n/2"};
+  return bench::gnuplot_script(c.out + "/aeg-cost.svg", {signs, nodes});
+}
+
+}  // namespace kvd::bench::aeg_cost_suite
