@@ -151,6 +151,8 @@ private:
     d["nodes_rebuilt"] = b.nodes_rebuilt;
     d["frontier_replays"] = b.frontier_replays;
     d["subtree_replays"] = b.subtree_replays;
+    d["signs"] = b.signs;
+    d["held"] = b.held;
     d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(kin_.tree().text());
     return d;

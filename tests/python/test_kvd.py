@@ -149,9 +149,11 @@ def test_segment_stepping_gives_the_batches_of_kvd_simulate(name):
         assert b["structure_hash"] == k.tree["structure_hash"]  # the tree in force is the batch's
         assert all(event in ("vertex", "edge", "intersection", "flip") for _, _, event in b["failing"])
     assert [(b["time"], len(b["failing"]), b["changed"], b["certificates"], b["nodes_rebuilt"], b["frontier_replays"],
-             b["subtree_replays"]) for b in batches] == [
+             b["subtree_replays"], b["signs"], b["held"]) for b in batches] == [
         (t["time"], t["failing"], t["changed"], t["certificates"], t["nodes_rebuilt"], t["frontier_replays"],
-         t["subtree_replays"]) for t in theirs["batch_list"]]
+         t["subtree_replays"], t["signs"], t["held"]) for t in theirs["batch_list"]]
+    # The kept set's update reads the signs of the certificates in force.
+    assert sum(b["held"] for b in batches) > 0
     assert k.summary["failures"] == theirs["failures"]
     assert k.summary["validations"] == theirs["validations"] and k.summary["validation_failures"] == []
     assert k.tree["nodes"] == theirs["nodes"] and k.summary["certificates"] == theirs["certificates"]
@@ -165,10 +167,12 @@ def test_paper_segments_give_the_batches_of_kvd_simulate_certificates_paper(name
     p = kvd.PaperSegments(kvd.load_segments(segment_file(name)), events=30)
     batches = list(iter(p.advance, None))
     assert [(b["time"], [{"kind": kind, "of": of} for kind, of in b["failing"]], b["changed"], b["certificates"],
-             b["replays"], b["frontier_replays"], b["nodes_rebuilt"], b["flipped_in_place"], b["nodes_edited"])
-            for b in batches] == [
+             b["replays"], b["frontier_replays"], b["nodes_rebuilt"], b["flipped_in_place"], b["nodes_edited"], b["signs"],
+             b["held"]) for b in batches] == [
         (t["time"], t["failing"], t["changed"], t["certificates"], t["replays"], t["frontier_replays"], t["nodes_rebuilt"],
-         t["flipped_in_place"], t["nodes_edited"]) for t in theirs["batch_list"]]
+         t["flipped_in_place"], t["nodes_edited"], t["signs"], t["held"]) for t in theirs["batch_list"]]
+    # The paper's set holds no sign of the construction: every one asked is decided.
+    assert all(b["held"] == 0 for b in batches) and sum(b["signs"] for b in batches) > 0
     assert batches[-1]["structure_hash"] == p.tree["structure_hash"] and p.tree["nodes"] == theirs["nodes"]
     assert p.summary["validations"] == theirs["validations"] > 0 and p.summary["validation_failures"] == []
 
