@@ -848,3 +848,47 @@ TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds,
   CHECK(flips.find("| rotating, long segments | 10 | ") < flips.find("| rotating, long segments | 12 | "));
   CHECK(flips.find("| rotating, long segments | 12 | ") != std::string::npos);
 }
+
+TEST_CASE("kvd bench aeg-cost counts an event's cost of both segment runs, or writes nothing on bad input",
+          "[cli][bench]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/bench-aeg-cost";
+  const std::string to = " --out " + out;
+  std::remove((out + "/aeg-cost.md").c_str());
+  std::remove((out + "/aeg-cost.csv").c_str());
+  CHECK(run("bench aeg-cost --help").out.find("usage: kvd bench aeg-cost") != std::string::npos);
+  CHECK(run("bench aeg-cost --sizes 0" + to).status == 2);
+  CHECK(run("bench aeg-cost --events x" + to).status == 2);
+  CHECK(!std::ifstream(out + "/aeg-cost.md").good());
+  REQUIRE(run("bench aeg-cost --sizes 20,10 --events 40" + to).status == 0);
+  std::ifstream f(out + "/aeg-cost.md");
+  const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  CHECK(md.find("| 10 | 10 | ") < md.find("| 20 | 20 | "));
+  std::ifstream c(out + "/aeg-cost.csv");
+  std::string header, line;
+  std::getline(c, header);
+  std::vector<std::string> names;
+  for (std::stringstream hs(header); std::getline(hs, line, ',');) names.push_back(line);
+  std::map<std::string, std::map<std::string, std::string>> rows;  // by run, n and m
+  while (std::getline(c, line)) {
+    std::map<std::string, std::string> v;
+    std::stringstream ls(line);
+    for (const std::string& n : names) std::getline(ls, v[n], ',');
+    INFO(line);
+    CHECK(std::stoul(v["batches"]) > 0);
+    CHECK(std::stod(v["signs_median"]) <= std::stod(v["signs_max"]));
+    CHECK(std::stod(v["nodes_made_median"]) <= std::stod(v["nodes_made_max"]));
+    rows[v["run"] + " " + v["n"] + " " + v["m"]] = v;
+  }
+  CHECK(rows.size() == 8);  // two runs of n = 10 and 20, all and half moving
+  for (const char* scene : {"10 10", "10 5", "20 20", "20 10"}) {
+    auto& local = rows[std::string("local ") + scene];
+    auto& paper = rows[std::string("paper ") + scene];
+    INFO(scene);
+    // One scene, one tree at the start; the paper's set holds no sign of
+    // the construction, the kept one reads the signs it holds.
+    CHECK(local["nodes"] == paper["nodes"]);
+    CHECK(local["k"] == paper["k"]);
+    CHECK(std::stod(paper["held_mean"]) == 0);
+    CHECK(std::stod(local["held_mean"]) > 0);
+  }
+}
