@@ -114,10 +114,6 @@ Static_row measure_static(std::size_t n, Crossings crossings, const Config& c) {
   return row;
 }
 
-double mean(const std::vector<double>& v) {
-  return v.empty() ? 0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-double max(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
 
 // Up to the batch holding the `events`-th failure, or the span's end.
 Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m, std::size_t events,
@@ -190,12 +186,12 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
                  (*other)->next_event_time().has_value() == local.next_event_time().has_value();
   // A run that reached the span's end saw all of it (generated scenes have one).
   row.time = (local.next_event_time() ? k.to_double(local.now()) : s.end->get_d()) - s.start.get_d();
-  row.local_mean_ms = mean(local_ms);
-  row.local_max_ms = max(local_ms);
-  row.subtree_mean_ms = mean(subtree_ms);
-  row.subtree_max_ms = max(subtree_ms);
-  row.rebuild_mean_ms = mean(rebuild_ms);
-  row.rebuild_max_ms = max(rebuild_ms);
+  row.local_mean_ms = mean_of(local_ms);
+  row.local_max_ms = max_of(local_ms);
+  row.subtree_mean_ms = mean_of(subtree_ms);
+  row.subtree_max_ms = max_of(subtree_ms);
+  row.rebuild_mean_ms = mean_of(rebuild_ms);
+  row.rebuild_max_ms = max_of(rebuild_ms);
   row.nodes_rebuilt_median = cli::median(nodes);
   row.subtree_nodes_median = cli::median(subtree_nodes);
   row.frontier_share = replays ? static_cast<double>(frontier) / static_cast<double>(replays) : 0;
@@ -212,15 +208,15 @@ Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m,
   const std::vector<double> flip_ms = pick(local_ms, true), flip_subtree_ms = pick(subtree_ms, true);
   const std::vector<double> flip_nodes = pick(nodes, true), flip_subtree_nodes = pick(subtree_nodes, true);
   row.flip_batches = flips.size();
-  row.flip_local_mean_ms = mean(flip_ms);
-  row.flip_local_max_ms = max(flip_ms);
+  row.flip_local_mean_ms = mean_of(flip_ms);
+  row.flip_local_max_ms = max_of(flip_ms);
   row.flip_nodes_median = cli::median(flip_nodes);
-  row.flip_nodes_max = max(flip_nodes);
-  row.flip_subtree_mean_ms = mean(flip_subtree_ms);
-  row.flip_subtree_max_ms = max(flip_subtree_ms);
+  row.flip_nodes_max = max_of(flip_nodes);
+  row.flip_subtree_mean_ms = mean_of(flip_subtree_ms);
+  row.flip_subtree_max_ms = max_of(flip_subtree_ms);
   row.flip_subtree_nodes_median = cli::median(flip_subtree_nodes);
-  row.flip_subtree_nodes_max = max(flip_subtree_nodes);
-  row.other_local_mean_ms = mean(pick(local_ms, false));
+  row.flip_subtree_nodes_max = max_of(flip_subtree_nodes);
+  row.other_local_mean_ms = mean_of(pick(local_ms, false));
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, update mean local "
             << cli::fixed(row.local_mean_ms, 2) << " ms"
             << (row.subtree_run ? ", subtree " + cli::fixed(row.subtree_mean_ms, 2) + " ms" : std::string())

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <numeric>
 
 #include "bench.hpp"
 #include "cli.hpp"
@@ -37,8 +36,9 @@ const char* const aeg_cost_help =
     "runs of each scene: the local update on the kept certificate set (one\n"
     "certificate per sign of the construction), and the run on the paper's\n"
     "certificates (transient cells, endpoints' neighbours, flips). Per batch:\n"
-    "the signs the update decided (by the filter, exactly or by the\n"
-    "perturbation), the signs it read from the certificates in force, the\n"
+    "the signs the update decided (by any rule: identity, the interval filter,\n"
+    "exact arithmetic, the perturbation), the signs it read from the\n"
+    "certificates in force, the\n"
     "nodes it made again, and its time. The counts are the same on any\n"
     "machine; the times are this one's.\n"
     "\n"
@@ -53,10 +53,6 @@ const char* const aeg_cost_help =
     "\n"
     "Exit status: 0 on success, 2 on bad input.\n";
 
-double mean(const std::vector<double>& v) {
-  return v.empty() ? 0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-double max(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
 // The smallest value at or above 90% of the batches.
 double p90(std::vector<double> v) {
   if (v.empty()) return 0;
@@ -81,16 +77,16 @@ void measure(Run& run, std::size_t events, const std::string& label, Run_row& ro
     progress(row.batches, row.failures);
   }
   row.signs_median = cli::median(signs);
-  row.signs_mean = mean(signs);
+  row.signs_mean = mean_of(signs);
   row.signs_p90 = p90(signs);
-  row.signs_max = max(signs);
-  row.held_mean = mean(held);
+  row.signs_max = max_of(signs);
+  row.held_mean = mean_of(held);
   row.nodes_made_median = cli::median(made);
-  row.nodes_made_mean = mean(made);
-  row.nodes_made_max = max(made);
-  row.mean_ms = mean(ms);
+  row.nodes_made_mean = mean_of(made);
+  row.nodes_made_max = max_of(made);
+  row.mean_ms = mean_of(ms);
   row.median_ms = cli::median(ms);
-  row.max_ms = max(ms);
+  row.max_ms = max_of(ms);
   std::cerr << label << ": " << row.batches << " batches, " << row.failures << " failures, signs decided a batch: mean "
             << cli::fixed(row.signs_mean, 1) << ", nodes made: mean " << cli::fixed(row.nodes_made_mean, 1) << ", "
             << cli::fixed(row.mean_ms, 3) << " ms\n";
@@ -130,7 +126,10 @@ int aeg_cost(cli::Args& args) {
       return 0;
     }
     if (a == "--sizes") c.sizes = sizes_option("aeg-cost", args.value(a), a, "segments");
-    else if (a == "--events") c.events = args.unsigned_value(a);
+    else if (a == "--events") {
+      c.events = args.unsigned_value(a);
+      if (c.events < 1) throw cli::Usage_error("kvd bench aeg-cost: --events must be at least 1");
+    }
     else if (a == "--out") c.out = args.value(a);
     else args.unknown(a);
   }

@@ -5,9 +5,11 @@
 // makes them.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <string>
+#include <numeric>
 #include <vector>
 
 #include "kvd/scene/scene.hpp"
@@ -27,6 +29,12 @@ scene::Scene generated(const std::string& suite, const std::string& family, std:
 // The generated segment scene of n segments, m of them moving, seed 1.
 segments::Segment_scene generated_segments(const std::string& suite, segments::Segment_family family, std::size_t n,
                                            std::size_t m, segments::Crossings crossings);
+
+// The mean and the largest of v; 0 for none.
+inline double mean_of(const std::vector<double>& v) {
+  return v.empty() ? 0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+inline double max_of(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
 
 // Milliseconds from `start` to now (steady clock).
 inline double ms_since(std::chrono::steady_clock::time_point start) {

@@ -85,8 +85,10 @@ void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vec
 // The index may hold keys of certificates gone since (set_motion skips and
 // drops them); when it holds twice as many keys as there are certificates,
 // those in limbo counted (an update that forgets a large subtree moves most
-// of them there), it is made again from both, so its size stays within a
-// constant of theirs at a constant amortized cost per certificate made.
+// of them there), it is made again from both, so at every insertion its
+// size is within a constant of theirs (limbo empties at the end of an
+// update, and the next insertion may find it twice over and remake it), at
+// a constant amortized cost per certificate made.
 template <class K>
 void Kinetic_segment_bsp<K>::index(const Segment_certificate_key& key) {
   if (by_segment_.empty()) by_segment_.resize(scene_.segments.size());

@@ -92,7 +92,8 @@ public:
     // replayed whole (local and subtree updates).
     std::size_t frontier_replays = 0, subtree_replays = 0;
     // The signs the update decided, and those it read from the certificates
-    // in force (rule held): its cost in predicates, the same on any machine.
+    // in force (rule held): its cost in predicates, the same on any machine
+    // (not counted: a fresh build adopted by validation, set_motion).
     long signs = 0, held = 0;
   };
 
