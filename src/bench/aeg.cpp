@@ -10,7 +10,6 @@
 #include <chrono>
 #include <iostream>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <tuple>
 
@@ -113,7 +112,6 @@ Static_row measure_static(std::size_t n, Crossings crossings, const Config& c) {
   row.build_double_ms = cli::median(dbl);
   return row;
 }
-
 
 // Up to the batch holding the `events`-th failure, or the span's end.
 Kinetic_row measure_kinetic(Segment_family family, std::size_t n, std::size_t m, std::size_t events,
