@@ -222,7 +222,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   std::vector<Replay_root> out;
   for (auto& [r, change] : changes) {
     for (const std::size_t u : change.tops) {
-      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, {});
+      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, r, {});
       change.frontiers.insert(moved.begin(), moved.end());
     }
     for (const std::size_t n : change.frontiers) out.push_back({n, r});

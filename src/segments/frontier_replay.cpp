@@ -3,8 +3,10 @@
 // "Frontier replay"): when the signs that changed at the topmost node u are
 // those of one segment's steps, only those steps are decided again below u,
 // down to the leaves of the tree before that segment, and only the subtrees
-// there whose arrivals changed are replayed; and the frontier nodes of a
-// flip (flip_frontiers).
+// there whose arrivals changed are replayed (with failing nodes of other
+// segments below u, each one's steps from its own, down to the leaves of
+// the tree before the earliest of them: "Several segments at one instant");
+// and the frontier nodes of a flip (flip_frontiers).
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -67,49 +69,111 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
   };
   const std::optional<std::uint32_t> segment = changing(u);
   if (!segment) return std::nullopt;
-  const std::size_t r = rank[*segment];
-  if (cut_rank(node(u), rank) >= r) return std::nullopt;  // u is the frontier: its replay is all there is
+  // The segments whose steps changed above the frontier, by rank, with the
+  // nodes their steps are decided again from: u's segment from u, another
+  // (a failure of its own at the same instant, in the crown) from its
+  // topmost failing crown nodes. The frontier is the earliest one's: the
+  // crown's cuts are older than every one of them, so each one's steps
+  // there are decided against cuts that stay, and all are decided again
+  // before any frontier node is replayed from its log.
+  std::map<std::size_t, std::vector<std::size_t>> starts{{rank[*segment], {u}}};
+  std::size_t r = 0;
+  bool several = false;
   const auto frontier = [&](std::size_t n) { return cut_rank(node(n), rank) >= r; };
-
-  // A failing node below u above the frontier must be the segment's alone:
-  // its steps are decided again there. Below, the frontier node above it is
-  // replayed.
   std::set<std::size_t> replayed;
-  for (const std::int32_t f : nodes) {
-    std::size_t top = static_cast<std::size_t>(f);
-    bool under = false;
-    for (std::int32_t a = node(top).parent; a >= 0; a = node(static_cast<std::size_t>(a)).parent) {
-      if (static_cast<std::size_t>(a) == u) {
-        under = true;
-        break;
+  for (bool grew = true; grew;) {
+    grew = false;
+    r = starts.begin()->first;
+    if (cut_rank(node(u), rank) >= r) return std::nullopt;  // u is the frontier: its replay is all there is
+    replayed.clear();
+    std::map<std::size_t, std::vector<std::size_t>> crown;  // the failing crown nodes of each other segment
+    // A failing node below u above the frontier must be one segment's
+    // alone: its steps are decided again there. Below, the frontier node
+    // above it is replayed.
+    for (const std::int32_t f : nodes) {
+      std::size_t top = static_cast<std::size_t>(f);
+      bool under = false;
+      for (std::int32_t a = node(top).parent; a >= 0; a = node(static_cast<std::size_t>(a)).parent) {
+        if (static_cast<std::size_t>(a) == u) {
+          under = true;
+          break;
+        }
+        if (frontier(static_cast<std::size_t>(a))) top = static_cast<std::size_t>(a);
       }
-      if (frontier(static_cast<std::size_t>(a))) top = static_cast<std::size_t>(a);
+      if (!under) continue;
+      if (frontier(top)) {
+        replayed.insert(top);
+        continue;
+      }
+      const std::optional<std::uint32_t> other = changing(top);
+      if (!other) return std::nullopt;
+      if (*other == *segment) continue;
+      grew = grew || starts.emplace(rank[*other], std::vector<std::size_t>{}).second;
+      crown[rank[*other]].push_back(top);
     }
-    if (!under) continue;
-    if (frontier(top)) replayed.insert(top);
-    else if (changing(top) != segment) return std::nullopt;
+    if (grew) continue;
+    // A segment whose failing nodes all fell below the frontier as it rose
+    // (its own cuts) has its changes made by the frontier nodes' replays
+    // alone; it still set the frontier.
+    several = starts.size() > 1;
+    std::erase_if(starts, [&](const auto& e) { return e.first != rank[*segment] && !crown.count(e.first); });
+    for (auto& [ro, at] : crown) {
+      const std::set<std::size_t> failing_here(at.begin(), at.end());
+      for (const std::size_t n : at) {
+        bool below = false;
+        for (std::int32_t a = node(n).parent; a >= 0 && static_cast<std::size_t>(a) != u && !below;
+             a = node(static_cast<std::size_t>(a)).parent)
+          below = failing_here.count(static_cast<std::size_t>(a)) > 0;
+        if (!below) starts[ro].push_back(n);
+      }
+    }
   }
 
-  // Decided again from u: the certificates at u, above the frontier, and
-  // above u for crossings found anew, are recorded. Above the frontier the
-  // cut stays; a key the segment's steps decided there before and do not
-  // now goes, unless another step decides it (the keys of the whole log,
-  // read once, and only when some key may go).
+  // Decided again from each start: the certificates there, above the
+  // frontier, and above the start for crossings found anew, are recorded.
+  // Above the frontier the cut stays; a key the segment's steps decided
+  // there before and do not now goes, unless another step decides it (the
+  // keys of the whole log, read once, and only when some key may go).
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
-  const std::vector<std::size_t> moved =
-      reroute_segment(builder, tree_, log_, rank, u, r,
-                      [&](std::size_t n, const std::vector<Arrival>& was, const std::vector<Arrival>& now) {
-                        const std::vector<Key> new_keys = keys_of(node(n), now);
-                        std::optional<std::vector<Key>> all;
-                        for (const Key& k : keys_of(node(n), was)) {
-                          if (has(new_keys, k)) continue;
-                          if (!all) all = keys_of(node(n), log_.at[n]);
-                          if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
-                        }
-                      });
-  replayed.insert(moved.begin(), moved.end());
+  const Reroute_above above = [&](std::size_t n, const std::vector<Arrival>& was, const std::vector<Arrival>& now) {
+    const std::vector<Key> new_keys = keys_of(node(n), now);
+    std::optional<std::vector<Key>> all;
+    for (const Key& k : keys_of(node(n), was)) {
+      if (has(new_keys, k)) continue;
+      if (!all) all = keys_of(node(n), log_.at[n]);
+      if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
+    }
+  };
+  for (const auto& [rs, from] : starts)
+    for (const std::size_t v : from) {
+      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, v, rs, r, above);
+      replayed.insert(moved.begin(), moved.end());
+    }
+  // With one segment's steps changed, a frontier node is remade with that
+  // segment's cuts first and the old subtrees kept where the later steps
+  // did not change. With several, a later segment's block in the node's log
+  // changed too, and the remake, which tells an old subtree by its log,
+  // would take it for unchanged: the node is replayed (Lemma 2).
+  const std::optional<std::size_t> remake = several ? std::nullopt : std::optional(r);
+  // A later segment's crossing with a segment of the frontier's rank or
+  // later is not found by its walk above the frontier and is located as
+  // logged; if it went at this instant, it lands in a frontier node that its
+  // segment's walk does not reach, where no crossing of that segment can lie
+  // (a crossing's location and its segment's walk take the same way down).
+  if (!remake)
+    for (const std::size_t n : replayed) {
+      auto& at = log_.at[n];
+      std::set<std::uint32_t> walked;
+      for (const Arrival& a : at)
+        if (a.kind == Arrival::Kind::crossings) walked.insert(a.segment);
+      at.erase(std::remove_if(at.begin(), at.end(),
+                              [&](const Arrival& a) {
+                                return a.kind == Arrival::Kind::intersection && !walked.count(a.segment);
+                              }),
+               at.end());
+    }
   std::vector<Replay_root> roots;
-  for (const std::size_t n : replayed) roots.push_back({n, r});
+  for (const std::size_t n : replayed) roots.push_back({n, remake});
   return roots;
 }
 

@@ -13,8 +13,8 @@ namespace kvd::segments {
 template <class K>
 std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindrical_bsp& tree, Build_log& log,
                                          const std::vector<std::size_t>& rank, std::size_t u, std::size_t r,
-                                         const Reroute_above& above) {
-  const auto frontier = [&](std::size_t n) { return cut_rank(tree.nodes[n], rank) >= r; };
+                                         std::size_t frontier_rank, const Reroute_above& above) {
+  const auto frontier = [&](std::size_t n) { return cut_rank(tree.nodes[n], rank) >= frontier_rank; };
   const auto mine = [&](std::size_t n) {
     const auto& at = log.at[n];
     const auto [from, to] = rank_block(at, rank, r);
@@ -34,7 +34,7 @@ std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindri
     if (!frontier(n))
       for (const std::int32_t c : tree.nodes[n].child) stack.push_back(static_cast<std::size_t>(c));
   }
-  builder.reroute(u, mine(u), r, after);
+  builder.reroute(u, mine(u), frontier_rank, after);
   std::set<std::size_t> reached;
   for (const auto& [n, steps] : before) reached.insert(n);
   for (const auto& [n, steps] : after) reached.insert(n);
@@ -56,7 +56,7 @@ std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindri
 #define KVD_INSTANTIATE_REROUTE(K)                                                                              \
   template std::vector<std::size_t> reroute_segment<K>(Bsp_builder<K>&, const Cylindrical_bsp&, Build_log&,     \
                                                        const std::vector<std::size_t>&, std::size_t, std::size_t, \
-                                                       const Reroute_above&);
+                                                       std::size_t, const Reroute_above&);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_REROUTE)
 
 }  // namespace kvd::segments

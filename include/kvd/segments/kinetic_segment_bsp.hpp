@@ -20,8 +20,11 @@
 // again from u down to the frontier (the first nodes of cuts of s or later
 // segments: the leaves of B_{s-1} under u), and only the frontier nodes whose
 // arrivals changed are made again, keeping the old subtrees below s's cuts
-// whose arrivals did not change (Subtree_fit::remake); otherwise it replays
-// u's subtree. A flip is
+// whose arrivals did not change (Subtree_fit::remake). Failing nodes of
+// other segments below u, each node one segment's (events of several
+// segments at one instant), have their segments' steps decided again from
+// them too, down to the frontier of the earliest segment, whose nodes are
+// then replayed. Otherwise it replays u's subtree. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
 // cells of the segment's own cuts, and the update is the paper's (section
@@ -179,8 +182,8 @@ private:
   bool update(const std::vector<Failing>& failing, Batch& b);
   using Replay_root = segments::Replay_root;
   // The frontier replay at the topmost node u (see above; `nodes`: every
-  // failing node, sorted): the segment's steps decided again and its logs
-  // and certificates above the frontier made anew; returns the frontier
+  // failing node, sorted): the changing segments' steps decided again and
+  // their logs and certificates above the frontier made anew; returns the frontier
   // nodes to replay, or none when it does not apply (and nothing changed).
   std::optional<std::vector<Replay_root>> frontier_replay(std::size_t u, const std::vector<Failing>& failing,
                                                           const std::vector<std::int32_t>& nodes);

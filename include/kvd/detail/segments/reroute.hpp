@@ -25,16 +25,18 @@ struct Replay_root {
 // segment's arrivals was rewritten: the node, the block before and after.
 using Reroute_above = std::function<void(std::size_t, const std::vector<Arrival>&, const std::vector<Arrival>&)>;
 
-// The steps of the segment of rank r at u (whose cut is of an earlier rank)
-// decided again from u down to the frontier: the first nodes of rank r or
-// later, which the segment's insertion split (Bsp_builder::reroute). The
+// The steps of the segment of rank r at u (whose cut is of an earlier rank
+// than `frontier`) decided again from u down to the frontier: the first
+// nodes of rank `frontier` or later, which the insertion of that rank split
+// (Bsp_builder::reroute; `frontier` is r itself but when the steps of
+// several segments changed: Kinetic_segment_bsp::frontier_replay). The
 // segment's block in every log its steps reach, before or after, becomes the
 // new one; u's own arrivals stay. Returns the frontier nodes whose block
-// changed, to be made again with the segment's cuts first (Subtree_fit::
-// remake with rank r); the cuts above them stay.
+// changed, to be made again with the frontier's segment's cuts first
+// (Subtree_fit::remake with rank `frontier`); the cuts above them stay.
 template <class K>
 std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindrical_bsp& tree, Build_log& log,
                                          const std::vector<std::size_t>& rank, std::size_t u, std::size_t r,
-                                         const Reroute_above& above);
+                                         std::size_t frontier, const Reroute_above& above);
 
 }  // namespace kvd::segments
