@@ -509,8 +509,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
                       [&](std::size_t n) { recelled.emplace_back(n, from); }});
   // Every subtree is made again before any certificate: an endpoint may move
   // from one frontier node to another.
-  for (const auto& [v, frontier] : roots) {
-    from = frontier ? 0 : v;
+  for (const auto& [v, frontier, whole] : roots) {
+    from = frontier || whole ? 0 : v;
     const std::string text = tree_.text(v);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
@@ -518,7 +518,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
     std::optional<std::size_t> r = frontier;
     const std::int32_t up = tree_.nodes[v].parent;
     if (const std::size_t own = cut_rank(tree_.nodes[v], scene_.rank);
-        !r && own < scene_.rank.size() && (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < own))
+        !r && !whole && own < scene_.rank.size() &&
+        (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < own))
       r = own;
     if (r) {
       // v, the first cut of its segment on its path (or a frontier node of
@@ -540,9 +541,10 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
     is.insert(is.end(), y.begin(), y.end());
     changed = changed || tree_.text(v) != text;
     ++b.replays;
-    b.frontier_replays += frontier.has_value();
+    b.frontier_replays += frontier.has_value() || whole;
   }
-  for (const auto& [v, frontier] : roots) {
+  for (const Replay_root& root : roots) {
+    const std::size_t v = root.node;
     // The certificates of the nodes made, and of the kept ones with a new
     // cell (certify_below keeps a node's certificate only with its cell).
     // The ancestors' transience may change with the point cuts below v:
@@ -572,8 +574,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(lost));
   lost.erase(std::unique(lost.begin(), lost.end()), lost.end());
   std::set<std::size_t> above(fit.tops().begin(), fit.tops().end());
-  for (const auto& [v, frontier] : roots)
-    for (std::int32_t a = tree_.nodes[v].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
+  for (const Replay_root& root : roots)
+    for (std::int32_t a = tree_.nodes[root.node].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
       a = tree_.nodes[static_cast<std::size_t>(a)].parent;
   unlog_crossings(log_, above, lost);
   return changed;

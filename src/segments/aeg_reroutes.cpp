@@ -204,28 +204,83 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
             return {};
       }
   }
-  // Changes of different segments at one instant are rerouted only apart:
-  // no top or frontier node of one at or above another's (what a reroute
-  // changes lies below its tops).
+  // Changes of different segments at one instant whose tops and frontier
+  // nodes lie apart are rerouted each down to its own frontier (what a
+  // reroute changes lies below its tops).
+  bool nested = false;
   for (const auto& [r, change] : changes) {
     std::vector<std::size_t> region(change.tops.begin(), change.tops.end());
     region.insert(region.end(), change.frontiers.begin(), change.frontiers.end());
     for (const std::size_t v : region)
-      for (std::int32_t a = static_cast<std::int32_t>(v); a >= 0; a = parent(static_cast<std::size_t>(a)))
+      for (std::int32_t a = static_cast<std::int32_t>(v); a >= 0 && !nested; a = parent(static_cast<std::size_t>(a)))
         for (const auto& [r2, other] : changes)
           if (r2 != r && (other.frontiers.count(static_cast<std::size_t>(a)) > 0 ||
                           std::count(other.tops.begin(), other.tops.end(), static_cast<std::size_t>(a)) > 0))
-            return {};
+            nested = true;
   }
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   if (!validate_) builder.log_traces_only();
   std::vector<Replay_root> out;
-  for (auto& [r, change] : changes) {
-    for (const std::size_t u : change.tops) {
-      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, r, {});
-      change.frontiers.insert(moved.begin(), moved.end());
+  if (!nested) {
+    for (auto& [r, change] : changes) {
+      for (const std::size_t u : change.tops) {
+        const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, r, {});
+        change.frontiers.insert(moved.begin(), moved.end());
+      }
+      for (const std::size_t n : change.frontiers) out.push_back({n, r});
     }
-    for (const std::size_t n : change.frontiers) out.push_back({n, r});
+    return out;
+  }
+  // Otherwise every segment's steps are decided again from its tops above
+  // the frontier of the earliest segment, down to it, and the frontier
+  // nodes above the changes are replayed whole (proofs/segment-local-update.md,
+  // "Several segments at one instant"). The guards above asked each segment's
+  // signs down to its own frontier, which lies at or below that one.
+  const std::size_t first = changes.begin()->first;
+  const auto frontier_of = [&](std::size_t n) {  // the topmost node of rank `first` or later on n's path
+    std::size_t f = n;
+    for (std::int32_t a = parent(n); a >= 0 && cut_rank(tree_.nodes[static_cast<std::size_t>(a)], rank) >= first;
+         a = parent(static_cast<std::size_t>(a)))
+      f = static_cast<std::size_t>(a);
+    return f;
+  };
+  std::set<std::size_t> frontiers;
+  for (const auto& [r, change] : changes) {
+    for (const std::size_t cell : change.starts) frontiers.insert(frontier_of(cell));
+    // A node below the shared frontier and above the segment's own where
+    // its steps decide a changed key: its frontier node is replayed (the
+    // segment's reroute, stopped above, does not decide it again).
+    std::vector<std::size_t> stack(change.tops.begin(), change.tops.end());
+    while (!stack.empty()) {
+      const std::size_t n = stack.back();
+      stack.pop_back();
+      const Bsp_node& q = tree_.nodes[n];
+      if (cut_rank(q, rank) >= r) continue;
+      const std::vector<Arrival>& log = log_.at[n];
+      const auto [from, to] = rank_block(log, rank, r);
+      if (from == to) continue;
+      if (cut_rank(q, rank) >= first) {
+        keys.clear();
+        for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
+        if (std::any_of(keys.begin(), keys.end(), [&](const Key& k) { return change.keys.count(normal(k)) > 0; })) {
+          frontiers.insert(frontier_of(n));
+          continue;
+        }
+      }
+      for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));
+    }
+    for (const std::size_t u : change.tops) {
+      if (cut_rank(tree_.nodes[u], rank) >= first) {
+        frontiers.insert(frontier_of(u));
+        continue;
+      }
+      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, first, {});
+      frontiers.insert(moved.begin(), moved.end());
+    }
+  }
+  for (const std::size_t n : frontiers) {
+    drop_unwalked_crossings(log_.at[n]);
+    out.push_back({n, std::nullopt, true});
   }
   return out;
 }

@@ -151,29 +151,12 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     }
   // With one segment's steps changed, a frontier node is remade with that
   // segment's cuts first and the old subtrees kept where the later steps
-  // did not change. With several, a later segment's block in the node's log
-  // changed too, and the remake, which tells an old subtree by its log,
-  // would take it for unchanged: the node is replayed (Lemma 2).
-  const std::optional<std::size_t> remake = several ? std::nullopt : std::optional(r);
-  // A later segment's crossing with a segment of the frontier's rank or
-  // later is not found by its walk above the frontier and is located as
-  // logged; if it went at this instant, it lands in a frontier node that its
-  // segment's walk does not reach, where no crossing of that segment can lie
-  // (a crossing's location and its segment's walk take the same way down).
-  if (!remake)
-    for (const std::size_t n : replayed) {
-      auto& at = log_.at[n];
-      std::set<std::uint32_t> walked;
-      for (const Arrival& a : at)
-        if (a.kind == Arrival::Kind::crossings) walked.insert(a.segment);
-      at.erase(std::remove_if(at.begin(), at.end(),
-                              [&](const Arrival& a) {
-                                return a.kind == Arrival::Kind::intersection && !walked.count(a.segment);
-                              }),
-               at.end());
-    }
+  // did not change; with several, it is replayed whole.
   std::vector<Replay_root> roots;
-  for (const std::size_t n : replayed) roots.push_back({n, remake});
+  for (const std::size_t n : replayed) {
+    if (several) drop_unwalked_crossings(log_.at[n]);
+    roots.push_back(several ? Replay_root{n, std::nullopt, true} : Replay_root{n, r});
+  }
   return roots;
 }
 

@@ -210,13 +210,14 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
                      {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}});
-  for (const auto& [v, rank] : roots) {
+  for (const Replay_root& root : roots) {
+    const std::size_t v = root.node;
     before.push_back(tree_.text(v));
     arrivals.push_back(log_.at[v]);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
-    if (rank) spare.push_back(fit.set_aside(v, *rank));
-    else {
+    if (root.rank) spare.push_back(fit.set_aside(v, *root.rank));
+    else {  // replayed whole
       spare.emplace_back();
       fit.discard(v, false);
     }
@@ -249,9 +250,9 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   // and above the cells taken whole.
   // (tops: nodes made above cells taken whole, whose logs may name a crossing gone)
   std::set<std::size_t> above(fit.tops().begin(), fit.tops().end());
-  for (const auto& [v, rank] : roots) {
+  for (const Replay_root& root : roots) {
     if (gone.empty()) break;
-    std::int32_t a = tree_.nodes[v].parent;
+    std::int32_t a = tree_.nodes[root.node].parent;
     while (a >= 0 && above.insert(static_cast<std::size_t>(a)).second) a = tree_.nodes[static_cast<std::size_t>(a)].parent;
   }
   unlog_crossings(log_, above, gone);

@@ -53,6 +53,13 @@ std::vector<std::size_t> reroute_segment(Bsp_builder<K>& builder, const Cylindri
   return changed;
 }
 
+void drop_unwalked_crossings(std::vector<Arrival>& log) {
+  std::set<std::uint32_t> walked;
+  for (const Arrival& a : log)
+    if (a.kind == Arrival::Kind::crossings) walked.insert(a.segment);
+  std::erase_if(log, [&](const Arrival& a) { return a.kind == Arrival::Kind::intersection && !walked.count(a.segment); });
+}
+
 #define KVD_INSTANTIATE_REROUTE(K)                                                                              \
   template std::vector<std::size_t> reroute_segment<K>(Bsp_builder<K>&, const Cylindrical_bsp&, Build_log&,     \
                                                        const std::vector<std::size_t>&, std::size_t, std::size_t, \

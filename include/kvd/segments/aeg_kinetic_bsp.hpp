@@ -24,8 +24,9 @@
 // children; the cells, logs and certificates of the nodes touched follow
 // (proofs/segment-certificates.md, "Flips in place"). A batch whose failing
 // certificates changed only signs that one segment's steps decide (two
-// walls crossing, an endpoint passing through a segment; several apart)
-// reroutes that segment (reroutes).
+// walls crossing, an endpoint passing through a segment; several at one
+// instant, apart or one inside the other's region) reroutes that segment
+// (reroutes).
 // Any other batch, and a flip that meets anything else at its instant, is
 // replayed:
 //
@@ -99,7 +100,7 @@ public:
     bool changed = false;                     // the tree just after differs from the one before
     std::size_t certificates = 0;             // in force after the batch
     std::size_t replays = 0;                  // subtrees replayed
-    std::size_t frontier_replays = 0;         // of those, below one segment's steps decided again (reroutes)
+    std::size_t frontier_replays = 0;         // of those, below segments' steps decided again (reroutes)
     std::size_t nodes_rebuilt = 0;            // nodes made again
     std::size_t flipped_in_place = 0;         // leaves of B_{i-1} of a flip turned in place, not replayed
     std::size_t nodes_edited = 0;             // nodes whose children, cell or log those edits changed
@@ -272,7 +273,7 @@ private:
   // key (taken as an x order, `normal`) names that segment last, as two
   // walls crossing do (the later wall's segment) and an endpoint passing
   // through a segment (the later of the two); several such segments at one
-  // instant when their nodes lie apart. For each, the topmost nodes above
+  // instant. For each, the topmost nodes above
   // its frontier where its steps decide a changed key are found; when none
   // of its other steps there, nor another segment's step at those nodes
   // about the changed points, changes sign now, and no cut on the
@@ -282,6 +283,10 @@ private:
   // those above the certificates' nodes, are returned to be made again, its
   // cuts first (proofs/segment-local-update.md, "Frontier replay",
   // "Rerouting on the paper's set"); else nothing is done and none returned.
+  // When one segment's nodes lie at or above another's, every segment's
+  // steps are decided again down to the frontier of the earliest, and the
+  // frontier nodes there are returned to be replayed whole ("Several
+  // segments at one instant").
   std::vector<Replay_root> reroutes(const std::vector<Entry>& entries);
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.

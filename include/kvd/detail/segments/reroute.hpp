@@ -16,10 +16,24 @@ namespace kvd::segments {
 
 // A subtree to make again: its root, and for a frontier node the rank of
 // the segment whose steps changed above it (its cuts come first there).
+// `whole`: a frontier node whose log changed in the blocks of several
+// segments, made again by a replay of its log (Lemma 2) with nothing kept:
+// the remake tells an old subtree by its log, and would take one whose log
+// changed in a later block for unchanged.
 struct Replay_root {
   std::size_t node;
   std::optional<std::size_t> rank;
+  bool whole = false;
 };
+
+// Before the whole replay of a frontier node below which several segments'
+// steps were decided again: the log's crossings of a segment whose crossing
+// walk does not reach the node go. Such a crossing, with a segment of the
+// frontier's rank or later, is not found by the walks above the frontier
+// and is located as logged; it lands where its walk does not reach only if
+// it went at this instant (in an exact log a crossing's location and its
+// segment's walk take the same way down).
+void drop_unwalked_crossings(std::vector<Arrival>& log);
 
 // Called (when set) for a node above the frontier whose block of the
 // segment's arrivals was rewritten: the node, the block before and after.
