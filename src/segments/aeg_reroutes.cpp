@@ -2,9 +2,9 @@
 // changed only keys that one segment's steps decide, updated by rerouting
 // that segment: two walls crossing (the later wall's segment), an endpoint
 // passing through a segment (the later of the two); several such at one
-// instant in disjoint subtrees
-// (kvd/segments/aeg_kinetic_bsp.hpp, reroutes;
-// proofs/segment-local-update.md, "Rerouting on the paper's set").
+// instant, each down to its own frontier when they lie apart, else all down
+// to the frontier of the earliest (kvd/segments/aeg_kinetic_bsp.hpp,
+// reroutes; proofs/segment-local-update.md, "Rerouting on the paper's set").
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -208,7 +208,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   // nodes lie apart are rerouted each down to its own frontier (what a
   // reroute changes lies below its tops).
   bool nested = false;
-  for (const auto& [r, change] : changes) {
+  for (auto c = changes.begin(); c != changes.end() && !nested; ++c) {
+    const auto& [r, change] = *c;
     std::vector<std::size_t> region(change.tops.begin(), change.tops.end());
     region.insert(region.end(), change.frontiers.begin(), change.frontiers.end());
     for (const std::size_t v : region)
@@ -245,11 +246,15 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     return f;
   };
   std::set<std::size_t> frontiers;
-  for (const auto& [r, change] : changes) {
+  for (const auto& group : changes) {
+    // (Named, not bound: the lambda below captures them.)
+    const std::size_t r = group.first;
+    const Change& change = group.second;
     for (const std::size_t cell : change.starts) frontiers.insert(frontier_of(cell));
     // A node below the shared frontier and above the segment's own where
-    // its steps decide a changed key: its frontier node is replayed (the
-    // segment's reroute, stopped above, does not decide it again).
+    // its steps decide a changed key, or ask a sign that vanishes now: its
+    // frontier node is replayed (the segment's reroute, stopped above, does
+    // not decide them again). Its tops there are such nodes.
     std::vector<std::size_t> stack(change.tops.begin(), change.tops.end());
     while (!stack.empty()) {
       const std::size_t n = stack.back();
@@ -262,21 +267,19 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       if (cut_rank(q, rank) >= first) {
         keys.clear();
         for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
-        if (std::any_of(keys.begin(), keys.end(), [&](const Key& k) { return change.keys.count(normal(k)) > 0; })) {
+        if (std::any_of(keys.begin(), keys.end(),
+                        [&](const Key& k) { return change.keys.count(normal(k)) > 0 || vanishes(k); })) {
           frontiers.insert(frontier_of(n));
           continue;
         }
       }
       for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));
     }
-    for (const std::size_t u : change.tops) {
-      if (cut_rank(tree_.nodes[u], rank) >= first) {
-        frontiers.insert(frontier_of(u));
-        continue;
+    for (const std::size_t u : change.tops)
+      if (cut_rank(tree_.nodes[u], rank) < first) {
+        const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, first, {});
+        frontiers.insert(moved.begin(), moved.end());
       }
-      const std::vector<std::size_t> moved = reroute_segment(builder, tree_, log_, rank, u, r, first, {});
-      frontiers.insert(moved.begin(), moved.end());
-    }
   }
   for (const std::size_t n : frontiers) {
     drop_unwalked_crossings(log_.at[n]);

@@ -108,13 +108,14 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
       const std::optional<std::uint32_t> other = changing(top);
       if (!other) return std::nullopt;
       if (*other == *segment) continue;
-      grew = grew || starts.emplace(rank[*other], std::vector<std::size_t>{}).second;
+      // A segment earlier than the frontier's lowers it: the pass is made again.
+      if (starts.emplace(rank[*other], std::vector<std::size_t>{}).second && rank[*other] < r) grew = true;
       crown[rank[*other]].push_back(top);
     }
     if (grew) continue;
     // A segment whose failing nodes all fell below the frontier as it rose
     // (its own cuts) has its changes made by the frontier nodes' replays
-    // alone; it still set the frontier.
+    // alone; if it is the earliest, it still set the frontier.
     several = starts.size() > 1;
     std::erase_if(starts, [&](const auto& e) { return e.first != rank[*segment] && !crown.count(e.first); });
     for (auto& [ro, at] : crown) {

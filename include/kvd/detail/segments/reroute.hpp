@@ -19,7 +19,9 @@ namespace kvd::segments {
 // `whole`: a frontier node whose log changed in the blocks of several
 // segments, made again by a replay of its log (Lemma 2) with nothing kept:
 // the remake tells an old subtree by its log, and would take one whose log
-// changed in a later block for unchanged.
+// changed in a later block for unchanged. (The kept run replays every root
+// without a rank whole; the run on the paper's set otherwise remakes a root
+// that is its segment's first cut on its path.)
 struct Replay_root {
   std::size_t node;
   std::optional<std::size_t> rank;
@@ -31,8 +33,11 @@ struct Replay_root {
 // walk does not reach the node go. Such a crossing, with a segment of the
 // frontier's rank or later, is not found by the walks above the frontier
 // and is located as logged; it lands where its walk does not reach only if
-// it went at this instant (in an exact log a crossing's location and its
-// segment's walk take the same way down).
+// it went at this instant. (In an exact log a crossing's location and its
+// segment's walk take the same way down to the first cut that segment made
+// on it, below which the location goes on alone; no cut of a segment
+// arriving at a frontier node lies above it, since its parent's rank is
+// below the frontier's and ranks do not decrease down a path.)
 void drop_unwalked_crossings(std::vector<Arrival>& log);
 
 // Called (when set) for a node above the frontier whose block of the
