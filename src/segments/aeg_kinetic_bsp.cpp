@@ -343,7 +343,7 @@ std::size_t Aeg_kinetic_bsp<K>::subjects(const Entry& e, std::vector<Site_point>
     }
     case Aeg_certificate_kind::endpoint: {
       points.push_back(Site_point::endpoint(e.index));
-      if (collinear(e.index)) segments.push_back(e.index / 2);
+      if (!collinear(e.index).empty()) segments.push_back(e.index / 2);
       const Cell& c = tree_.nodes[leaf_[e.index]].cell;
       for (const auto& s : {c.floor, c.roof})
         if (s) {
@@ -359,19 +359,55 @@ std::size_t Aeg_kinetic_bsp<K>::subjects(const Entry& e, std::vector<Site_point>
 }
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::collinear(std::size_t e) const {
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::collinear(std::size_t e) const {
   const Cell& c = tree_.nodes[leaf_[e]].cell;
   const auto on = [&](std::size_t p, std::uint32_t s) {
     return pred_.side(Site_point::endpoint(p), s, now_).rule != Segment_rule::value;
   };
+  std::vector<std::size_t> out;
   for (const auto& s : {c.floor, c.roof})
-    if (s && on(e, *s) && on(e ^ 1U, *s)) return true;
-  return false;
+    if (s && on(e, *s) && on(e ^ 1U, *s)) out.push_back(*s);
+  return out;
+}
+
+template <class K>
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::passing(std::size_t e) const {
+  const std::vector<std::size_t>& rank = scene_.rank;
+  std::vector<std::size_t> on = collinear(e);
+  on.push_back(e / 2);
+  std::size_t first = rank.size();
+  for (const std::size_t s : on) first = std::min(first, rank[s]);
+  const auto reached = [&](std::size_t v) {
+    return std::any_of(on.begin(), on.end(), [&](std::size_t s) {
+      const auto [from, to] = rank_block(log_.at[v], rank, rank[s]);
+      return from != to;
+    });
+  };
+  std::vector<std::size_t> out, stack{0};
+  std::vector<Segment_certificate_key> keys;
+  while (!stack.empty()) {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    const Bsp_node& n = tree_.nodes[v];
+    if (cut_rank(n, rank) >= first) {
+      out.push_back(v);
+      continue;
+    }
+    keys.clear();
+    for (const std::size_t s : on) {
+      const auto [from, to] = rank_block(log_.at[v], rank, rank[s]);
+      for (std::size_t i = from; i < to; ++i) decided_keys(n, log_.at[v][i], keys);
+    }
+    if (std::any_of(keys.begin(), keys.end(), [&](const Segment_certificate_key& k) { return vanishes(k); })) return {0};
+    for (const std::int32_t ch : n.child)
+      if (reached(static_cast<std::size_t>(ch))) stack.push_back(static_cast<std::size_t>(ch));
+  }
+  return out;
 }
 
 template <class K>
 std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
-  if (e.kind == Aeg_certificate_kind::endpoint && collinear(e.index)) return {0};
+  if (e.kind == Aeg_certificate_kind::endpoint && !collinear(e.index).empty()) return passing(e.index);
   if (e.kind == Aeg_certificate_kind::flip) {
     // A replay of the segment's first cuts remakes what lies below them.
     std::vector<std::size_t> out = tops(e.index);

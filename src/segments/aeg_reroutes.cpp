@@ -89,7 +89,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     if (e.kind == Aeg_certificate_kind::flip) return {};
     // A segment on its neighbour's line changes signs at every wall across
     // both, which no certificate holds (proofs/segment-certificates.md).
-    if (e.kind == Aeg_certificate_kind::endpoint && collinear(e.index)) return {};
+    if (e.kind == Aeg_certificate_kind::endpoint && !collinear(e.index).empty()) return {};
     const Certificate& c = held({e.kind, e.index});
     const Decided now = signs(c, e.index);
     if (now.size() != c.decided.size()) return {};
@@ -112,13 +112,6 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   if (changes.empty() || (!unchanged.empty() && changes.size() > 1)) return {};
   changes.begin()->second.starts.insert(changes.begin()->second.starts.end(), unchanged.begin(), unchanged.end());
   const auto parent = [&](std::size_t n) { return tree_.nodes[n].parent; };
-  // Whether a key's sign may change now: a polynomial deciding it vanishes
-  // (not a tie for good that the perturbation decides the same way before
-  // and after; order_at of a line with itself is no sign: decided_keys
-  // lists it).
-  const auto vanishes = [&](const Key& k) {
-    return !(k.kind == Key::Kind::order_at && k.i == k.j) && pred_.sign_of(k, now_).at_root;
-  };
   std::vector<Key> keys;
   for (auto& group : changes) {
     // (Named, not bound: lambdas below capture them.)
@@ -130,19 +123,19 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     };
     // The topmost nodes, of a cut earlier than the segment's, where its
     // steps decide a changed key, found down the nodes whose log holds a
-    // step of the segment. Every changed key that names an earlier cut must
-    // be decided on the way, at a top or below one (looked for there while
-    // one is missing); the x order of two of the segment's own points is
-    // decided by its cuts below the frontier. Above the tops none of the
-    // segment's other signs may change now: no certificate tells, and the
-    // reroute does not decide them again (below a top it does).
+    // step of the segment, and every node below them where one is decided
+    // (for the guard after the frontier's). Every changed key that names an
+    // earlier cut must be decided on the way, at a top or below one; the x
+    // order of two of the segment's own points is decided by its cuts below
+    // the frontier. Above the tops none of the segment's other signs may
+    // change now: no certificate tells, and the reroute does not decide
+    // them again (below a top it does).
     std::set<Key> found;
     std::vector<std::size_t> deciding;  // every node where a changed key is decided
     std::vector<std::pair<std::size_t, bool>> stack{{0, false}};  // a node, and whether a top is above it
     while (!stack.empty()) {
       const auto [n, below] = stack.back();
       stack.pop_back();
-      if (below && found.size() == change.above.size()) continue;
       const Bsp_node& q = tree_.nodes[n];
       if (cut_rank(q, rank) >= r) continue;
       const std::vector<Arrival>& log = log_.at[n];

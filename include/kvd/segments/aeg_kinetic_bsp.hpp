@@ -233,20 +233,34 @@ private:
   // B_{i-1} that one meets lies below another's; else nothing is done and
   // false returned.
   bool flip_in_place(const std::vector<std::size_t>& turning, const std::set<std::size_t>& failing, Batch& b);
-  // Whether endpoint e's segment lies on the line of one of its neighbours
-  // at now (both its endpoints' sides of it vanish there): two parallel
-  // segments passing through each other's line swap their order at every
-  // wall across both, not only near e, and the signs of later segments'
-  // crossings on either against the other change too.
-  bool collinear(std::size_t e) const;
+  // The neighbours of endpoint e (its leaf's floor and roof) on whose line
+  // its segment lies at now (both its endpoints' sides of it vanish there):
+  // two parallel segments passing through each other's line swap their
+  // order at every wall across both, not only near e, and the signs of
+  // later segments' crossings on either against the other change too.
+  std::vector<std::size_t> collinear(std::size_t e) const;
   // What a failing certificate is about: the points and segments of its
   // cuts (see above; a flip's segment; a collinear endpoint's own segment
   // too), and the node its path starts from (a transient node, an
   // endpoint's leaf; none for a flip).
   std::size_t subjects(const Entry& e, std::vector<Site_point>& points, std::vector<std::size_t>& segments) const;
-  // The subtrees to replay for a failing certificate (see above; the whole
-  // tree for a collinear endpoint's).
+  // The subtrees to replay for a failing certificate (see above; for a
+  // collinear endpoint's, `passing`).
   std::vector<std::size_t> roots(const Entry& e) const;
+  // For endpoint e on its neighbour's line (collinear): every sign that
+  // changes names both segments, and is decided at a cut no earlier than
+  // the earlier of them, so below the topmost such nodes that either
+  // segment reaches (its frontier nodes); those are returned. When one of
+  // the two segments' steps above them asks a sign that vanishes now (a
+  // degenerate instant), the tree's root.
+  std::vector<std::size_t> passing(std::size_t e) const;
+  // Whether a key's sign may change now: a polynomial deciding it vanishes
+  // (not a tie for good that the perturbation decides the same way before
+  // and after; order_at of a line with itself is no sign: decided_keys
+  // lists it).
+  bool vanishes(const Segment_certificate_key& k) const {
+    return !(k.kind == Segment_certificate_key::Kind::order_at && k.i == k.j) && pred_.sign_of(k, now_).at_root;
+  }
   // The nodes where a sign may change: the failing transient nodes and
   // endpoints' leaves, and below the roots every cut of a point or segment
   // the failing certificates are about (for a flip, every point on its
