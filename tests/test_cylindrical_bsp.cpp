@@ -217,3 +217,64 @@ TEST_CASE("the segment predicates' interval filter changes no tree", "[segments]
   CHECK(algebraic > 0);
   CHECK(filtered > 1000);
 }
+
+// Segment_predicates::remember: a key asked again at the remembered instant
+// gets the sign, rule and root flag that the rules gave it (checked against
+// predicates that remember nothing), without being decided again; another
+// instant, `refresh` and `forget` are decided by the rules. Degenerate
+// scenes (zeros at the instant, perturbation) and, in the exact kernel, the
+// algebraic instants of a rotating scene's events (signs just after).
+TEMPLATE_TEST_CASE("a remembered instant answers a key asked again as the rules did", "[segments][predicates]",
+                   KVD_ALL_KERNELS) {
+  const TestType k;
+  const auto check = [&](const Segment_scene& s, const typename TestType::Time& t) {
+    std::vector<Segment_certificate_key> keys;
+    const std::size_t n = s.segments.size();
+    for (std::size_t a = 0; a < 2 * n; ++a) {
+      const Site_point p = Site_point::endpoint(a);
+      for (std::size_t b = a + 1; b < 2 * n; ++b)
+        keys.push_back({Segment_certificate_key::Kind::x_order, p, Site_point::endpoint(b), 0, 0});
+      for (std::uint32_t i = 0; i < n; ++i) {
+        if (p.on(i)) continue;
+        keys.push_back({Segment_certificate_key::Kind::side, p, {}, i, 0});
+        const std::uint32_t j = (i + 1) % n;
+        if (!p.on(j)) keys.push_back({Segment_certificate_key::Kind::order_at, p, {}, i, j});
+      }
+    }
+    Segment_predicates<TestType> remembering(k, s);
+    const Segment_predicates<TestType> plain(k, s);
+    remembering.remember(t);
+    const auto same = [&](const Segment_sign& a, const Segment_sign& b) {
+      return a.sign == b.sign && a.rule == b.rule && a.at_root == b.at_root;
+    };
+    for (const Segment_certificate_key& key : keys) CHECK(same(remembering.sign_of(key, t), plain.sign_of(key, t)));
+    const long decided = remembering.counts().decided();
+    CHECK(decided == plain.counts().decided());
+    for (const Segment_certificate_key& key : keys) CHECK(same(remembering.sign_of(key, t), plain.sign_of(key, t)));
+    CHECK(remembering.counts().decided() == decided);
+    CHECK(remembering.counts().repeated == static_cast<long>(keys.size()));
+    const typename TestType::Time copy = t;  // the same instant, another object: not remembered
+    remembering.sign_of(keys.front(), copy);
+    CHECK(remembering.counts().decided() == decided + 1);
+    remembering.refresh(0, t);
+    remembering.sign_of(keys.front(), t);
+    CHECK(remembering.counts().decided() == decided + 2);
+    remembering.remember(t);
+    remembering.forget();
+    remembering.sign_of(keys.front(), t);
+    CHECK(remembering.counts().decided() == decided + 3);
+    return plain.counts();
+  };
+  Segment_rule_counts rules;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Segment_rule_counts c = check(random_scene(seed, 8, 6), k.time(0));
+    rules.perturbation += c.perturbation;
+  }
+  CHECK(rules.perturbation > 0);
+  if constexpr (std::is_same_v<TestType, Exact_kernel>) {
+    const Segment_scene s = kvd::test::generated(Segment_family::rotating, 8, 3, 2);
+    Kinetic_segment_bsp<Exact_kernel> kin(k, s, false);
+    for (int n = 0; n < 6 && kin.next_event_time(); ++n) rules.after += check(s, kin.advance().time).after;
+    CHECK(rules.after > 0);
+  }
+}

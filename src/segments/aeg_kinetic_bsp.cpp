@@ -685,6 +685,12 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
 
 template <class K>
 void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
+  // Each key asked at now_ is decided once in the batch (remember).
+  pred_.remember(now_);
+  const struct Forget {
+    const Segment_predicates<K>& pred;
+    ~Forget() { pred.forget(); }
+  } forget{pred_};
   std::set<std::size_t> failing_transient;
   std::vector<std::size_t> turning;
   for (const Entry& e : entries) {

@@ -69,6 +69,7 @@ void Segment_predicates<K>::refresh(std::size_t segment, const Time& at) {
     load(e, k_->sign_at(poly_from_rational<typename K::FT>(s_->endpoint(e)[2]), at));
   cache_.lines[segment].reset();
   cache_.crossings.clear();
+  forget();
 }
 
 template <class K>
@@ -150,6 +151,20 @@ Segment_event event_in_batch(const Segment_certificate_key& k, const std::vector
 
 template <class K>
 Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const Time& t) const {
+  if (remembered_at_ != &t) return decide_by_rules(key, t);
+  if (!(recorder_ && record_polynomials_))
+    if (const auto at = remembered_.find(key); at != remembered_.end()) {
+      ++counts_.repeated;
+      if (recorder_) recorder_(key, {}, node_, at->second.sign);
+      return at->second;
+    }
+  const Segment_sign s = decide_by_rules(key, t);
+  remembered_.insert_or_assign(key, s);
+  return s;
+}
+
+template <class K>
+Segment_sign Segment_predicates<K>::decide_by_rules(const Segment_certificate_key& key, const Time& t) const {
   if constexpr (std::is_same_v<K, Exact_kernel>) {
     // Unless a recorder wants them, no polynomial is needed: a sign the
     // interval filter certifies is the value's sign (rule 2).

@@ -146,7 +146,8 @@ struct Segment_rule_counts {
   long identity = 0, value = 0, after = 0, perturbation = 0;
   long filtered = 0;  // of `value`, decided by the exact kernel's interval filter
   long held = 0;      // taken from a certificate in force (Segment_predicates::held)
-  // The signs decided by any rule but `held`.
+  long repeated = 0;  // asked again at a remembered instant (Segment_predicates::remember)
+  // The signs decided by any rule but `held` (a repeat is not decided again).
   long decided() const { return identity + value + after + perturbation; }
 };
 
@@ -210,6 +211,21 @@ public:
   // certificates in force: their sign holds until their failure time.
   using Held = std::function<std::optional<int>(const Segment_certificate_key&)>;
   void held(Held h) const { held_ = std::move(h); }
+  // While set, the signs decided at instant `t` (that very object: the
+  // caller's own, which must outlive it) are kept, and a key asked there
+  // again is answered from them without arithmetic (counted `repeated`, not
+  // decided), unless a recorder wants its polynomials. A kinetic update asks
+  // many keys more than once at its instant: the crossing bounding two parts
+  // of a segment, a key its guards ask and its replay decides. `forget`
+  // ends it, and so does `refresh` (a motion changed).
+  void remember(const Time& t) const {
+    remembered_.clear();
+    remembered_at_ = &t;
+  }
+  void forget() const {
+    remembered_.clear();
+    remembered_at_ = nullptr;
+  }
   // Reads segment s's endpoints from the scene again (its motion changed),
   // with the sign of their W at `at`.
   void refresh(std::size_t segment, const Time& at);
@@ -220,6 +236,8 @@ private:
   // exact kernel, unless a recorder wants polynomials, first by the interval
   // filter.
   Segment_sign decide(const Segment_certificate_key& key, const Time& t) const;
+  // decide's rules, without the remembered signs.
+  Segment_sign decide_by_rules(const Segment_certificate_key& key, const Time& t) const;
   bool vanishes(const P& f) const;
   void load(std::size_t e, int w);
 
@@ -233,6 +251,8 @@ private:
   mutable bool record_polynomials_ = true;
   mutable Held held_;
   mutable std::int32_t node_ = -1;
+  mutable const Time* remembered_at_ = nullptr;
+  mutable std::unordered_map<Segment_certificate_key, Segment_sign, Segment_certificate_key_hash> remembered_;
   std::shared_ptr<detail::Segment_filter> filter_;  // the exact kernel's, unless built without
 };
 
