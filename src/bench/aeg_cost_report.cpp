@@ -71,7 +71,8 @@ std::string markdown(const Config& c, const std::vector<Run_row>& rows, bool plo
       "\n## The run on the paper's set\n\n"
       "The paper's set holds only the transient cells, the endpoints' neighbours and the flips, so an update "
       "decides at the instant the signs it reads, and those its guards ask (which segment's steps changed, and that "
-      "no other sign vanishes there).\n\n" +
+      "no other sign vanishes there). It remembers the signs of the batch's instant, so a key asked again is not "
+      "decided again.\n\n" +
       table(rows, "paper");
   if (plotted)
     out += "\n## Plot\n\nAbove, the mean signs per batch against n (log scales: a straight line is a power of n); "

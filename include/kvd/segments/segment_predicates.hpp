@@ -19,7 +19,8 @@
 // A kinetic run may name the signs it already knows (`held`): the sign of a
 // certificate in force, decided earlier by rules 2-4 and unchanged since
 // (none of its polynomials has a root between then and t), is taken as is,
-// without arithmetic (rule `held`).
+// without arithmetic (rule `held`). At an instant it remembers (`remember`),
+// decide answers a key asked again from its first decision.
 //
 // Points are homogeneous (X, Y, W). Endpoints are scaled so that W > 0 on the
 // whole span (the loader rejects a W that vanishes there); a derived point's
