@@ -96,6 +96,7 @@ private:
     d["nodes_edited"] = b.nodes_edited;
     d["signs"] = b.signs;
     d["held"] = b.held;
+    d["repeated"] = b.repeated;
     d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(run_.tree().text());
     return d;
@@ -120,7 +121,7 @@ void bind_paper_segments(py::module_& m) {
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
            "certificates_made, replays, frontier_replays, nodes_rebuilt, flipped_in_place, nodes_edited, signs, held,\n"
-           "update_seconds, "
+           "repeated, update_seconds, "
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),

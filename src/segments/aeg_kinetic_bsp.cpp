@@ -676,6 +676,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start - aside).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;
+  b.repeated = pred_.counts().repeated - signs.repeated;
   b.certificates = certificates();
   b.certificates_made = made_ - made;
   if (fresh && flips && b.flipped_in_place > 0 && augment(tree_, *fresh, now_).text() != augmented)

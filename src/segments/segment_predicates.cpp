@@ -159,7 +159,8 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
       return at->second;
     }
   const Segment_sign s = decide_by_rules(key, t);
-  remembered_.insert_or_assign(key, s);
+  // A held sign does not know whether it vanishes at t (Segment_sign::at_root).
+  if (s.rule != Segment_rule::held) remembered_.insert_or_assign(key, s);
   return s;
 }
 

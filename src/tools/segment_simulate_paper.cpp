@@ -78,6 +78,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
                         {"replays", b.replays}, {"frontier_replays", b.frontier_replays}, {"nodes_rebuilt", b.nodes_rebuilt},
                         {"flipped_in_place", b.flipped_in_place}, {"nodes_edited", b.nodes_edited},
                         {"certificates_made", b.certificates_made}, {"signs", b.signs}, {"held", b.held},
+                        {"repeated", b.repeated},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
       j["batch_list"] = list;

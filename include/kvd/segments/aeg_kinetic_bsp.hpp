@@ -107,6 +107,7 @@ public:
     std::size_t certificates_made = 0;        // made again (computed, not kept), the failing ones included
     double update_seconds = 0;                // the tree and its certificates made again
     long signs = 0, held = 0;                 // decided by the update, and read from certificates in force
+    long repeated = 0;                        // asked again in the batch, answered from its first decision
   };
 
   // The scene is copied; the run starts at its start. With `validate`, the
