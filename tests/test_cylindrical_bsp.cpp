@@ -220,25 +220,39 @@ TEST_CASE("the segment predicates' interval filter changes no tree", "[segments]
 
 // Segment_predicates::remember: a key asked again at the remembered instant
 // gets the sign, rule and root flag that the rules gave it (checked against
-// predicates that remember nothing), without being decided again; another
-// instant, `refresh` and `forget` are decided by the rules. Degenerate
+// predicates that remember nothing), without being decided again, and a
+// recorder still hears of it (without polynomials); a recorder that wants
+// polynomials, held signs, another instant object, another `remember`,
+// `refresh` and `forget` are decided afresh. Keys of endpoints and of the
+// crossings present at the instant, asked both ways round. Degenerate
 // scenes (zeros at the instant, perturbation) and, in the exact kernel, the
 // algebraic instants of a rotating scene's events (signs just after).
 TEMPLATE_TEST_CASE("a remembered instant answers a key asked again as the rules did", "[segments][predicates]",
                    KVD_ALL_KERNELS) {
+  using Key = Segment_certificate_key;
   const TestType k;
   const auto check = [&](const Segment_scene& s, const typename TestType::Time& t) {
-    std::vector<Segment_certificate_key> keys;
     const std::size_t n = s.segments.size();
-    for (std::size_t a = 0; a < 2 * n; ++a) {
-      const Site_point p = Site_point::endpoint(a);
-      for (std::size_t b = a + 1; b < 2 * n; ++b)
-        keys.push_back({Segment_certificate_key::Kind::x_order, p, Site_point::endpoint(b), 0, 0});
+    std::vector<Site_point> points;
+    for (std::size_t e = 0; e < 2 * n; ++e) points.push_back(Site_point::endpoint(e));
+    {
+      const Segment_predicates<TestType> pick(k, s);  // (its signs are not counted below)
+      const auto apart = [&](std::size_t i, std::size_t j) {
+        return pick.side(Site_point::endpoint(2 * i), j, t).sign * pick.side(Site_point::endpoint(2 * i + 1), j, t).sign < 0;
+      };
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+          if (apart(i, j) && apart(j, i)) points.push_back(Site_point::crossing(i, j));
+    }
+    std::vector<Key> keys;
+    for (std::size_t a = 0; a < points.size(); ++a) {
+      const Site_point& p = points[a];
+      for (std::size_t b = a + 1; b < points.size(); ++b) keys.push_back({Key::Kind::x_order, p, points[b], 0, 0});
       for (std::uint32_t i = 0; i < n; ++i) {
         if (p.on(i)) continue;
-        keys.push_back({Segment_certificate_key::Kind::side, p, {}, i, 0});
-        const std::uint32_t j = (i + 1) % n;
-        if (!p.on(j)) keys.push_back({Segment_certificate_key::Kind::order_at, p, {}, i, j});
+        keys.push_back({Key::Kind::side, p, {}, i, 0});
+        for (std::uint32_t j = i + 1; j < n; ++j)
+          if (!p.on(j)) keys.push_back({Key::Kind::order_at, p, {}, i, j});
       }
     }
     Segment_predicates<TestType> remembering(k, s);
@@ -247,22 +261,63 @@ TEMPLATE_TEST_CASE("a remembered instant answers a key asked again as the rules 
     const auto same = [&](const Segment_sign& a, const Segment_sign& b) {
       return a.sign == b.sign && a.rule == b.rule && a.at_root == b.at_root;
     };
-    for (const Segment_certificate_key& key : keys) CHECK(same(remembering.sign_of(key, t), plain.sign_of(key, t)));
+    for (const Key& key : keys) CHECK(same(remembering.sign_of(key, t), plain.sign_of(key, t)));
     const long decided = remembering.counts().decided();
     CHECK(decided == plain.counts().decided());
-    for (const Segment_certificate_key& key : keys) CHECK(same(remembering.sign_of(key, t), plain.sign_of(key, t)));
+    // Asked again, the other way round where a key has two: the same signs,
+    // none decided, and a recorder without polynomials hears each.
+    std::vector<std::pair<Key, int>> heard;
+    remembering.record([&](const Key& key, std::vector<typename TestType::Poly>&& polys, std::int32_t, int sign) {
+      CHECK(polys.empty());
+      heard.emplace_back(key, sign);
+    }, false);
+    long asked = 0;
+    for (const Key& key : keys) {
+      const Segment_sign r = key.kind == Key::Kind::x_order ? remembering.compare_x(key.q, key.p, t)
+                                                             : remembering.sign_of(key, t);
+      const Segment_sign p = key.kind == Key::Kind::x_order ? plain.compare_x(key.q, key.p, t) : plain.sign_of(key, t);
+      CHECK(same(r, p));
+      asked += r.rule != Segment_rule::identity;
+    }
     CHECK(remembering.counts().decided() == decided);
-    CHECK(remembering.counts().repeated == static_cast<long>(keys.size()));
+    CHECK(remembering.counts().repeated == asked);
+    CHECK(static_cast<long>(heard.size()) == asked);
+    for (const auto& [key, sign] : heard) CHECK(sign == plain.sign_of(key, t).sign);
+    // A recorder that wants polynomials gets every key decided again.
+    remembering.record([](const Key&, std::vector<typename TestType::Poly>&&, std::int32_t, int) {});
+    for (const Key& key : keys) remembering.sign_of(key, t);
+    remembering.record({});
+    CHECK(remembering.counts().decided() == decided + asked);
+    CHECK(remembering.counts().repeated == asked);
+    // Held signs are the caller's: while held is set, nothing is remembered
+    // (the exact kernel's filter still comes first).
+    remembering.held([](const Key&) { return std::optional<int>(1); });
+    for (const Key& key : keys) remembering.sign_of(key, t);
+    remembering.held({});
+    CHECK(remembering.counts().held > 0);
+    CHECK(remembering.counts().decided() + remembering.counts().held == decided + 2 * asked);
+    CHECK(remembering.counts().repeated == asked);
+    long now = remembering.counts().decided();
     const typename TestType::Time copy = t;  // the same instant, another object: not remembered
     remembering.sign_of(keys.front(), copy);
-    CHECK(remembering.counts().decided() == decided + 1);
+    CHECK(remembering.counts().decided() == ++now);
+    remembering.remember(copy);  // another instant ends the first one
+    remembering.sign_of(keys.front(), t);
+    CHECK(remembering.counts().decided() == ++now);
+    remembering.sign_of(keys.front(), copy);
+    remembering.remember(copy);  // remembering an instant again starts afresh (its value may have moved)
+    remembering.sign_of(keys.front(), copy);
+    CHECK(remembering.counts().decided() == (now += 2));
+    remembering.remember(t);
+    remembering.sign_of(keys.front(), t);
     remembering.refresh(0, t);
     remembering.sign_of(keys.front(), t);
-    CHECK(remembering.counts().decided() == decided + 2);
+    CHECK(remembering.counts().decided() == (now += 2));
     remembering.remember(t);
+    remembering.sign_of(keys.front(), t);
     remembering.forget();
     remembering.sign_of(keys.front(), t);
-    CHECK(remembering.counts().decided() == decided + 3);
+    CHECK(remembering.counts().decided() == (now += 2));
     return plain.counts();
   };
   Segment_rule_counts rules;

@@ -73,7 +73,7 @@ void measure(Run& run, std::size_t events, const std::string& label, Run_row& ro
     row.failures += b.failing.size();
     signs.push_back(static_cast<double>(b.signs));
     held.push_back(static_cast<double>(b.held));
-    if constexpr (requires { b.repeated; }) repeated.push_back(static_cast<double>(b.repeated));
+    repeated.push_back(static_cast<double>(b.repeated));
     made.push_back(static_cast<double>(b.nodes_rebuilt));
     ms.push_back(1e3 * b.update_seconds);
     progress(row.batches, row.failures);

@@ -35,6 +35,17 @@ struct Recording {
   Recording& operator=(const Recording&) = delete;
 };
 
+// While alive, the predicates remember the signs of instant t (which must
+// keep its value meanwhile).
+template <class K>
+struct Remembering {
+  const Segment_predicates<K>& pred;
+  Remembering(const Segment_predicates<K>& p, const typename K::Time& t) : pred(p) { pred.remember(t); }
+  ~Remembering() { pred.forget(); }
+  Remembering(const Remembering&) = delete;
+  Remembering& operator=(const Remembering&) = delete;
+};
+
 // Failures in the order Batch::failing keeps.
 bool before(const Aeg_certificate_id& a, const Aeg_certificate_id& b) {
   return std::tie(a.kind, a.index, a.cell.left, a.cell.right, a.cell.floor, a.cell.roof) <
@@ -686,12 +697,9 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
 
 template <class K>
 void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
-  // Each key asked at now_ is decided once in the batch (remember).
-  pred_.remember(now_);
-  const struct Forget {
-    const Segment_predicates<K>& pred;
-    ~Forget() { pred.forget(); }
-  } forget{pred_};
+  // A key asked again at now_ is answered from its first decision, unless a
+  // certificate being made needs its polynomials.
+  const Remembering<K> remembering(pred_, now_);
   std::set<std::size_t> failing_transient;
   std::vector<std::size_t> turning;
   for (const Entry& e : entries) {

@@ -296,6 +296,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;
+  b.repeated = pred_.counts().repeated - signs.repeated;
   b.certificates = certs_.size();
   return b;
 }

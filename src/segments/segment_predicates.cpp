@@ -151,7 +151,7 @@ Segment_event event_in_batch(const Segment_certificate_key& k, const std::vector
 
 template <class K>
 Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, const Time& t) const {
-  if (remembered_at_ != &t) return decide_by_rules(key, t);
+  if (remembered_at_ != &t || held_) return decide_by_rules(key, t);
   if (!(recorder_ && record_polynomials_))
     if (const auto at = remembered_.find(key); at != remembered_.end()) {
       ++counts_.repeated;
@@ -159,8 +159,7 @@ Segment_sign Segment_predicates<K>::decide(const Segment_certificate_key& key, c
       return at->second;
     }
   const Segment_sign s = decide_by_rules(key, t);
-  // A held sign does not know whether it vanishes at t (Segment_sign::at_root).
-  if (s.rule != Segment_rule::held) remembered_.insert_or_assign(key, s);
+  remembered_.insert_or_assign(key, s);
   return s;
 }
 

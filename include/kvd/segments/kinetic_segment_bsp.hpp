@@ -98,6 +98,7 @@ public:
     // in force (rule held): its cost in predicates, the same on any machine
     // (not counted: a fresh build adopted by validation, set_motion).
     long signs = 0, held = 0;
+    long repeated = 0;  // answered from a remembered instant (Segment_predicates::remember): this run does not remember
   };
 
   // The scene is copied. With `validate`, the tree in force is compared,

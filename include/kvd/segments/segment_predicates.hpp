@@ -196,10 +196,10 @@ public:
   // ε-coefficient that does not vanish, constants left out: the sign stays
   // until one of them changes sign) and the node `at_node` last named (-1:
   // none). A construction reports its complete certificate set this way,
-  // since it branches on nothing else. Without `polynomials`, in the exact
-  // kernel, the interval filter may decide the sign first, and the recorder
-  // then gets no polynomial (for a caller that compares signs, not failure
-  // times).
+  // since it branches on nothing else. Without `polynomials`, the recorder
+  // may get no polynomial (for a caller that compares signs, not failure
+  // times): in the exact kernel the interval filter may decide the sign
+  // first, and at a remembered instant a key asked again is not decided.
   using Recorder =
       std::function<void(const Segment_certificate_key&, std::vector<P>&&, std::int32_t node, int sign)>;
   void record(Recorder r, bool polynomials = true) const {
@@ -213,18 +213,20 @@ public:
   using Held = std::function<std::optional<int>(const Segment_certificate_key&)>;
   void held(Held h) const { held_ = std::move(h); }
   // While set, the signs decided at instant `t` (that very object: the
-  // caller's own, which must outlive it) are kept, and a key asked there
-  // again is answered from them without arithmetic (counted `repeated`, not
-  // decided), unless a recorder wants its polynomials. A kinetic update asks
-  // many keys more than once at its instant: the crossing bounding two parts
-  // of a segment, a key its guards ask and its replay decides. `forget`
-  // ends it, and so does `refresh` (a motion changed).
+  // caller's own, which must outlive it and keep its value meanwhile) are
+  // kept, and a key asked there again is answered from them without
+  // arithmetic (counted `repeated`, not decided), unless a recorder wants
+  // its polynomials or `held` is set (a held sign is the caller's to give).
+  // A kinetic update asks many keys more than once at its instant: the
+  // crossing bounding two parts of a segment, a key its guards ask and its
+  // replay decides. `forget` ends it, and so do another `remember` and
+  // `refresh` (a motion changed).
   void remember(const Time& t) const {
-    remembered_.clear();
+    forget();
     remembered_at_ = &t;
   }
   void forget() const {
-    remembered_.clear();
+    if (!remembered_.empty()) remembered_.clear();  // (clear costs the buckets even when empty)
     remembered_at_ = nullptr;
   }
   // Reads segment s's endpoints from the scene again (its motion changed),
@@ -235,7 +237,8 @@ private:
   // The single entry point: the sign of the product of the key's factors
   // (detail/segments/segment_factors.hpp), each decided by rules 2-4; in the
   // exact kernel, unless a recorder wants polynomials, first by the interval
-  // filter.
+  // filter; at a remembered instant, a key asked again from its first
+  // decision (remember).
   Segment_sign decide(const Segment_certificate_key& key, const Time& t) const;
   // decide's rules, without the remembered signs.
   Segment_sign decide_by_rules(const Segment_certificate_key& key, const Time& t) const;
