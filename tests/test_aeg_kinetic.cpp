@@ -135,6 +135,10 @@ void side_by_side(const std::string& name, const Segment_scene& s, bool neighbou
     c.frontier += b.frontier_replays > 0;
     INFO(name << ": batch at t = " << b.time.to_string());
     CHECK(b.changed);
+    // Where its signs were decided accounts for some of them, never more.
+    const auto& p = b.phases;
+    CHECK(p.own_guard + p.other_guard + p.ties + p.certificates + p.leaves <= b.signs);
+    CHECK(p.certificates > 0);  // the failing ones, at least, are read at the instant
     CHECK(same_log(run, pred, b.time));
     // The leaf each endpoint's certificate reads is the one beside it.
     for (std::size_t e = 0; e < 2 * s.segments.size(); ++e) {
@@ -268,6 +272,11 @@ TEST_CASE("walls crossing: a vertex event remakes the two leaves of B_{i-1} it m
   CHECK(b.failing == std::vector<Aeg_certificate_id>{transient(Site_point::endpoint(5), Site_point::endpoint(2), 0, {})});
   CHECK(b.replays == 2);
   CHECK(b.frontier_replays == 2);
+  // The guard over other segments' steps reads the log of s1.0's cut, the
+  // one node deciding the changed key: s1's and s3's steps there ask three
+  // signs, the x order of s1.0 and s1.1, s3.0 and s3.1 (each asked by three
+  // of their arrivals: the repeats are read from the first).
+  CHECK(b.phases.other_guard == 3);
   CHECK(run.tree().text() == "(V s0.0 . (V s0.1 (E s0 . (V s1.0 (V s2.0 (V s3.0 . (E s3 . .)) (E s2 (E s3 . .) .)) "
                              "(V s1.1 (E s1 (V s2.1 (E s2 (E s3 . .) .) (E s3 . .)) .) (V s3.1 (E s3 . .) .)))) .))");
   CHECK(same_log(run, pred, b.time));

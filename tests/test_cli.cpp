@@ -893,5 +893,14 @@ TEST_CASE("kvd bench aeg-cost counts an event's cost of both segment runs, or wr
     // Only the run on the paper's set remembers the signs of its instant.
     CHECK(std::stod(paper["repeated_mean"]) > 0);
     CHECK(std::stod(local["repeated_mean"]) == 0);
+    // and tells where it decided them: some of its signs, never more.
+    double phases = 0;
+    for (const char* p : {"own_guard_mean", "other_guard_mean", "ties_mean", "certificates_mean", "leaves_mean"}) {
+      CHECK(local[p].empty());
+      phases += std::stod(paper[p]);
+    }
+    CHECK(std::stod(paper["certificates_mean"]) > 0);
+    CHECK(phases <= std::stod(paper["signs_mean"]) + 0.01);
+    CHECK(std::stod(paper["other_guard_max"]) <= std::stod(paper["signs_max"]));
   }
 }

@@ -2,6 +2,7 @@
 // (aeg_cost_report.cpp).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -22,8 +23,18 @@ struct Run_row {
   // does not: 0).
   double signs_median = 0, signs_mean = 0, signs_p90 = 0, signs_max = 0, held_mean = 0, repeated_mean = 0;
   double nodes_made_median = 0, nodes_made_mean = 0, nodes_made_max = 0;
+  // The run on the paper's set only (`phased`): where its signs were decided
+  // per batch (Aeg_kinetic_bsp::Batch::phases), means by phase_names, and
+  // the worst batch of the guard over other segments' steps.
+  bool phased = false;
+  std::array<double, 5> phase_means{};
+  double other_guard_max = 0;
   double mean_ms = 0, median_ms = 0, max_ms = 0;
 };
+
+// The parts of the update on the paper's set that decide signs, in the
+// order of Aeg_kinetic_bsp::Batch::Phases.
+inline constexpr std::array<const char*, 5> phase_names{"own_guard", "other_guard", "ties", "certificates", "leaves"};
 
 struct Config {
   std::vector<std::size_t> sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};

@@ -97,6 +97,13 @@ private:
     d["signs"] = b.signs;
     d["held"] = b.held;
     d["repeated"] = b.repeated;
+    py::dict by;
+    by["own_guard"] = b.phases.own_guard;
+    by["other_guard"] = b.phases.other_guard;
+    by["ties"] = b.phases.ties;
+    by["certificates"] = b.phases.certificates;
+    by["leaves"] = b.phases.leaves;
+    d["signs_by"] = by;
     d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(run_.tree().text());
     return d;
@@ -121,7 +128,7 @@ void bind_paper_segments(py::module_& m) {
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
            "certificates_made, replays, frontier_replays, nodes_rebuilt, flipped_in_place, nodes_edited, signs, held,\n"
-           "repeated, update_seconds, "
+           "repeated, signs_by {own_guard, other_guard, ties, certificates, leaves}, update_seconds, "
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),

@@ -147,7 +147,10 @@ typename Aeg_kinetic_bsp<K>::Decided Aeg_kinetic_bsp<K>::signs(const Certificate
   const Recording recording(
       pred_, [&](const Segment_certificate_key& key, std::vector<P>&&, std::int32_t, int sign) { out.emplace_back(key, sign); },
       false);
-  ask(c, index);
+  counting(phases_.certificates, [&] {
+    ask(c, index);
+    return 0;
+  });
   return out;
 }
 
@@ -162,7 +165,10 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, std::size_t index) {
       for (P& q : polys) polys_.push_back(std::move(q));
       c.decided.emplace_back(key, sign);
     });
-    ask(c, index);
+    counting(phases_.certificates, [&] {
+      ask(c, index);
+      return 0;
+    });
   }
   ++made_;
   c.version = ++versions_;
@@ -282,7 +288,7 @@ void Aeg_kinetic_bsp<K>::make_transient(std::size_t v) {
 template <class K>
 void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from) {
   // The leaf beside p: its floor and roof are p's neighbours.
-  const std::size_t v = aeg_leaf(tree_, pred_, now_, e, from);
+  const std::size_t v = counting(phases_.leaves, [&] { return aeg_leaf(tree_, pred_, now_, e, from); });
   leaf_[e] = v;
   beside_[v].push_back(e);
   const Cell& c = tree_.nodes[v].cell;
@@ -492,8 +498,10 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::tops(std::size_t s) const {
 
 template <class K>
 bool Aeg_kinetic_bsp<K>::ties(const Bsp_node& n, const Site_point& at, bool identities) const {
-  const Segment_sign s = n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_);
-  return tied(s, identities);
+  return counting(phases_.ties, [&] {
+    return tied(n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_),
+                identities);
+  });
 }
 
 template <class K>
@@ -648,7 +656,8 @@ std::optional<typename K::Time> Aeg_kinetic_bsp<K>::next_event_time() {
 
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
-  Batch b{*next_event_time(), {}, false, 0, 0, 0, 0, 0, 0, 0, 0};
+  Batch b;
+  b.time = *next_event_time();
   // Validation's own predicates: its signs are not the run's.
   const std::optional<Segment_predicates<K>> fresh =
       validate_ ? std::optional<Segment_predicates<K>>(std::in_place, k_, scene_) : std::nullopt;
@@ -700,6 +709,7 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
   // A key asked again at now_ is answered from its first decision, unless a
   // certificate being made needs its polynomials.
   const Remembering<K> remembering(pred_, now_);
+  phases_ = {};
   std::set<std::size_t> failing_transient;
   std::vector<std::size_t> turning;
   for (const Entry& e : entries) {
@@ -756,6 +766,7 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
       make_endpoint(e);
     }
   failing_endpoints_.clear();
+  b.phases = phases_;
 }
 
 template <class K>
@@ -766,7 +777,8 @@ std::vector<typename Aeg_kinetic_bsp<K>::Batch> Aeg_kinetic_bsp<K>::advance_to(c
 template <class K>
 typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::set_motion(std::size_t segment, const Segment_motion& motion) {
   check_motion_change(k_, scene_, segment, motion, now_, bounded_ ? std::optional<Time>(end_) : std::nullopt);
-  Batch b{now_, {}, false, 0, 0, 0, 0, 0, 0, 0, 0};
+  Batch b;
+  b.time = now_;
   const auto start = std::chrono::steady_clock::now();
   const std::size_t made = made_;
   // The certificates naming the segment (Lemma 3.1), their signs just after

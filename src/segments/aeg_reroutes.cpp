@@ -185,17 +185,24 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // changed line for good, hidden behind a wall, as in the degenerate
     // family and the small-integer scenes) changes unseen by any
     // certificate of the set.
+    // (Its signs are counted apart from the other guards': Batch::phases.)
     std::sort(deciding.begin(), deciding.end());
     deciding.erase(std::unique(deciding.begin(), deciding.end()), deciding.end());
-    for (const std::size_t u : deciding)
-      for (const Arrival& a : log_.at[u]) {
-        if (a.segment == s) continue;
-        keys.clear();
-        decided_keys(tree_.nodes[u], a, keys);
-        for (const Key& k : keys)
-          if (!change.keys.count(normal(k)) && vanishes(k))
-            return {};
-      }
+    const long own = phases_.own_guard;
+    const bool other_vanishes = [&] {
+      for (const std::size_t u : deciding)
+        for (const Arrival& a : log_.at[u]) {
+          if (a.segment == s) continue;
+          keys.clear();
+          decided_keys(tree_.nodes[u], a, keys);
+          for (const Key& k : keys)
+            if (!change.keys.count(normal(k)) && vanishes(k)) return true;
+        }
+      return false;
+    }();
+    phases_.other_guard += phases_.own_guard - own;
+    phases_.own_guard = own;
+    if (other_vanishes) return {};
   }
   // Changes of different segments at one instant whose tops and frontier
   // nodes lie apart are rerouted each down to its own frontier (what a

@@ -79,6 +79,9 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
                         {"flipped_in_place", b.flipped_in_place}, {"nodes_edited", b.nodes_edited},
                         {"certificates_made", b.certificates_made}, {"signs", b.signs}, {"held", b.held},
                         {"repeated", b.repeated},
+                        {"signs_by", {{"own_guard", b.phases.own_guard}, {"other_guard", b.phases.other_guard},
+                                      {"ties", b.phases.ties}, {"certificates", b.phases.certificates},
+                                      {"leaves", b.phases.leaves}}},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
       j["batch_list"] = list;

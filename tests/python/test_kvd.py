@@ -168,9 +168,10 @@ def test_paper_segments_give_the_batches_of_kvd_simulate_certificates_paper(name
     batches = list(iter(p.advance, None))
     assert [(b["time"], [{"kind": kind, "of": of} for kind, of in b["failing"]], b["changed"], b["certificates"],
              b["replays"], b["frontier_replays"], b["nodes_rebuilt"], b["flipped_in_place"], b["nodes_edited"], b["signs"],
-             b["held"], b["repeated"]) for b in batches] == [
+             b["held"], b["repeated"], b["signs_by"]) for b in batches] == [
         (t["time"], t["failing"], t["changed"], t["certificates"], t["replays"], t["frontier_replays"], t["nodes_rebuilt"],
-         t["flipped_in_place"], t["nodes_edited"], t["signs"], t["held"], t["repeated"]) for t in theirs["batch_list"]]
+         t["flipped_in_place"], t["nodes_edited"], t["signs"], t["held"], t["repeated"], t["signs_by"])
+        for t in theirs["batch_list"]]
     # The paper's set holds no sign of the construction: every one asked is
     # decided, once a batch (a key asked again is repeated).
     assert all(b["held"] == 0 for b in batches) and sum(b["signs"] for b in batches) > 0

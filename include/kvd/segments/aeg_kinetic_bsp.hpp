@@ -108,6 +108,17 @@ public:
     double update_seconds = 0;                // the tree and its certificates made again
     long signs = 0, held = 0;                 // decided by the update, and read from certificates in force
     long repeated = 0;                        // asked again in the batch, answered from its first decision
+    // Of `signs`, those decided by: the guards over the changing segments'
+    // own steps (above the nodes a reroute starts from, above a collinear
+    // endpoint's leaves, between nested frontiers), the guard over other
+    // segments' steps at the nodes where a changed key is decided, the ties
+    // on the paths above the nodes made again, the certificates (read at
+    // the instant, and made), and the endpoints' leaves found again. The
+    // rest decided the cuts made again and the flips' and collinear
+    // endpoints' checks.
+    struct Phases {
+      long own_guard = 0, other_guard = 0, ties = 0, certificates = 0, leaves = 0;
+    } phases;
   };
 
   // The scene is copied; the run starts at its start. With `validate`, the
@@ -260,7 +271,16 @@ private:
   // and after; order_at of a line with itself is no sign: decided_keys
   // lists it).
   bool vanishes(const Segment_certificate_key& k) const {
-    return !(k.kind == Segment_certificate_key::Kind::order_at && k.i == k.j) && pred_.sign_of(k, now_).at_root;
+    return !(k.kind == Segment_certificate_key::Kind::order_at && k.i == k.j) &&
+           counting(phases_.own_guard, [&] { return pred_.sign_of(k, now_).at_root; });
+  }
+  // f(), the signs it decided added to `to` (Batch::phases).
+  template <class F>
+  auto counting(long& to, F f) const {
+    const long before = pred_.counts().decided();
+    auto r = f();
+    to += pred_.counts().decided() - before;
+    return r;
   }
   // The nodes where a sign may change: the failing transient nodes and
   // endpoints' leaves, and below the roots every cut of a point or segment
@@ -351,6 +371,7 @@ private:
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;
+  mutable typename Batch::Phases phases_;  // of the batch being updated
 };
 
 }  // namespace kvd::segments
