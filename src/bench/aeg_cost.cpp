@@ -67,7 +67,7 @@ template <class Run>
 void measure(Run& run, std::size_t events, const std::string& label, Run_row& row) {
   const auto progress = cli::progress_every_few_seconds(label);
   std::vector<double> signs, held, repeated, made, ms;
-  std::array<std::vector<double>, phase_names.size()> phases;
+  std::array<std::vector<double>, segments::Aeg_phases::count> phases;
   while (row.failures < events && run.next_event_time()) {
     const auto b = run.advance();
     ++row.batches;
@@ -76,9 +76,9 @@ void measure(Run& run, std::size_t events, const std::string& label, Run_row& ro
     held.push_back(static_cast<double>(b.held));
     repeated.push_back(static_cast<double>(b.repeated));
     if constexpr (requires { b.phases; }) {  // the run on the paper's set
-      const auto& p = b.phases;
-      const std::array<long, phase_names.size()> v{p.own_guard, p.other_guard, p.ties, p.certificates, p.leaves};
-      for (std::size_t i = 0; i < v.size(); ++i) phases[i].push_back(static_cast<double>(v[i]));
+      const auto named = b.phases.named();
+      for (std::size_t i = 0; i < named.size(); ++i) phases[i].push_back(static_cast<double>(named[i].second));
+      row.other_guard_max = std::max(row.other_guard_max, static_cast<double>(b.phases.other_guard));
     }
     made.push_back(static_cast<double>(b.nodes_rebuilt));
     ms.push_back(1e3 * b.update_seconds);
@@ -92,7 +92,6 @@ void measure(Run& run, std::size_t events, const std::string& label, Run_row& ro
   row.repeated_mean = mean_of(repeated);
   row.phased = !phases[0].empty();
   for (std::size_t i = 0; i < phases.size(); ++i) row.phase_means[i] = mean_of(phases[i]);
-  row.other_guard_max = max_of(phases[1]);
   row.nodes_made_median = cli::median(made);
   row.nodes_made_mean = mean_of(made);
   row.nodes_made_max = max_of(made);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "kvd/segments/aeg_phases.hpp"
+
 namespace kvd::bench::aeg_cost_suite {
 
 // One run over the first failures of one scene: its cost per batch in
@@ -27,14 +29,10 @@ struct Run_row {
   // per batch (Aeg_kinetic_bsp::Batch::phases), means by phase_names, and
   // the worst batch of the guard over other segments' steps.
   bool phased = false;
-  std::array<double, 5> phase_means{};
+  std::array<double, segments::Aeg_phases::count> phase_means{};  // in the order of Aeg_phases::named
   double other_guard_max = 0;
   double mean_ms = 0, median_ms = 0, max_ms = 0;
 };
-
-// The parts of the update on the paper's set that decide signs, in the
-// order of Aeg_kinetic_bsp::Batch::Phases.
-inline constexpr std::array<const char*, 5> phase_names{"own_guard", "other_guard", "ties", "certificates", "leaves"};
 
 struct Config {
   std::vector<std::size_t> sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};

@@ -24,7 +24,7 @@ std::string per_log(const Run_row& r) {
 // The run on the paper's set's phases, as CSV fields ending in a comma;
 // empty for the kept run.
 std::string phases_csv(const Run_row& r) {
-  if (!r.phased) return std::string(phase_names.size() + 1, ',');
+  if (!r.phased) return std::string(segments::Aeg_phases::count + 1, ',');
   std::string out;
   for (const double v : r.phase_means) out += cli::fixed(v, 3) + ",";
   return out + cli::approx(r.other_guard_max) + ",";
@@ -74,7 +74,7 @@ std::string csv(const std::vector<Run_row>& rows) {
       "run,n,m,k,nodes,batches,failures,signs_median,signs_mean,signs_p90,signs_max,held_mean,repeated_mean,"
       "nodes_made_median,"
       "nodes_made_mean,nodes_made_max,";
-  for (const char* name : phase_names) out += std::string(name) + "_mean,";
+  for (const auto& [name, signs] : segments::Aeg_phases{}.named()) out += std::string(name) + "_mean,";
   out += "other_guard_max,mean_ms,median_ms,max_ms\n";
   for (const Run_row& r : rows)
     out += r.run + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," + std::to_string(r.k) + "," +

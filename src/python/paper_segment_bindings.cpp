@@ -98,11 +98,7 @@ private:
     d["held"] = b.held;
     d["repeated"] = b.repeated;
     py::dict by;
-    by["own_guard"] = b.phases.own_guard;
-    by["other_guard"] = b.phases.other_guard;
-    by["ties"] = b.phases.ties;
-    by["certificates"] = b.phases.certificates;
-    by["leaves"] = b.phases.leaves;
+    for (const auto& [name, signs] : b.phases.named()) by[name] = signs;
     d["signs_by"] = by;
     d["update_seconds"] = b.update_seconds;
     d["structure_hash"] = tree::sha256_hex(run_.tree().text());

@@ -115,29 +115,31 @@ void Aeg_kinetic_bsp<K>::rebuild() {
 
 template <class K>
 void Aeg_kinetic_bsp<K>::ask(const Certificate& c, std::size_t index) {
-  switch (c.id.kind) {
-    case Aeg_certificate_kind::transient: {
-      const Cell& w = c.id.cell;
-      if (w.left && w.right) pred_.compare_x(*w.left, *w.right, now_);
-      if (w.floor && w.roof)
-        for (const auto& wall : {w.left, w.right})
-          if (wall) pred_.order_at(*wall, *w.roof, *w.floor, now_);
-      return;
-    }
-    case Aeg_certificate_kind::endpoint: {
-      const Site_point p = Site_point::endpoint(index);
-      for (const auto& s : {c.near.floor, c.near.roof}) {
-        if (!s) continue;
-        pred_.side(p, *s, now_);
-        pred_.compare_x(p, Site_point::endpoint(2 * *s), now_);
-        pred_.compare_x(p, Site_point::endpoint(2 * *s + 1), now_);
+  counting(phases_.certificates, [&] {
+    switch (c.id.kind) {
+      case Aeg_certificate_kind::transient: {
+        const Cell& w = c.id.cell;
+        if (w.left && w.right) pred_.compare_x(*w.left, *w.right, now_);
+        if (w.floor && w.roof)
+          for (const auto& wall : {w.left, w.right})
+            if (wall) pred_.order_at(*wall, *w.roof, *w.floor, now_);
+        return;
       }
-      return;
+      case Aeg_certificate_kind::endpoint: {
+        const Site_point p = Site_point::endpoint(index);
+        for (const auto& s : {c.near.floor, c.near.roof}) {
+          if (!s) continue;
+          pred_.side(p, *s, now_);
+          pred_.compare_x(p, Site_point::endpoint(2 * *s), now_);
+          pred_.compare_x(p, Site_point::endpoint(2 * *s + 1), now_);
+        }
+        return;
+      }
+      case Aeg_certificate_kind::flip:
+        pred_.compare_x(Site_point::endpoint(2 * index + 1), Site_point::endpoint(2 * index), now_);
+        return;
     }
-    case Aeg_certificate_kind::flip:
-      pred_.compare_x(Site_point::endpoint(2 * index + 1), Site_point::endpoint(2 * index), now_);
-      return;
-  }
+  });
 }
 
 template <class K>
@@ -147,10 +149,7 @@ typename Aeg_kinetic_bsp<K>::Decided Aeg_kinetic_bsp<K>::signs(const Certificate
   const Recording recording(
       pred_, [&](const Segment_certificate_key& key, std::vector<P>&&, std::int32_t, int sign) { out.emplace_back(key, sign); },
       false);
-  counting(phases_.certificates, [&] {
-    ask(c, index);
-    return 0;
-  });
+  ask(c, index);
   return out;
 }
 
@@ -165,10 +164,7 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, std::size_t index) {
       for (P& q : polys) polys_.push_back(std::move(q));
       c.decided.emplace_back(key, sign);
     });
-    counting(phases_.certificates, [&] {
-      ask(c, index);
-      return 0;
-    });
+    ask(c, index);
   }
   ++made_;
   c.version = ++versions_;
@@ -394,30 +390,29 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::passing(std::size_t e) const {
   on.push_back(e / 2);
   std::size_t first = rank.size();
   for (const std::size_t s : on) first = std::min(first, rank[s]);
-  const auto reached = [&](std::size_t v) {
-    return std::any_of(on.begin(), on.end(), [&](std::size_t s) {
-      const auto [from, to] = rank_block(log_.at[v], rank, rank[s]);
-      return from != to;
-    });
-  };
+  // Down the nodes whose log holds a step of one of them (every segment's
+  // first step is at the root).
   std::vector<std::size_t> out, stack{0};
+  std::vector<std::pair<std::size_t, std::size_t>> blocks;  // their steps in the node's log
   std::vector<Segment_certificate_key> keys;
   while (!stack.empty()) {
     const std::size_t v = stack.back();
     stack.pop_back();
+    const std::vector<Arrival>& log = log_.at[v];
+    blocks.clear();
+    for (const std::size_t s : on)
+      if (const auto block = rank_block(log, rank, rank[s]); block.first != block.second) blocks.push_back(block);
+    if (blocks.empty()) continue;
     const Bsp_node& n = tree_.nodes[v];
     if (cut_rank(n, rank) >= first) {
       out.push_back(v);
       continue;
     }
     keys.clear();
-    for (const std::size_t s : on) {
-      const auto [from, to] = rank_block(log_.at[v], rank, rank[s]);
-      for (std::size_t i = from; i < to; ++i) decided_keys(n, log_.at[v][i], keys);
-    }
+    for (const auto& [from, to] : blocks)
+      for (std::size_t i = from; i < to; ++i) decided_keys(n, log[i], keys);
     if (std::any_of(keys.begin(), keys.end(), [&](const Segment_certificate_key& k) { return vanishes(k); })) return {0};
-    for (const std::int32_t ch : n.child)
-      if (reached(static_cast<std::size_t>(ch))) stack.push_back(static_cast<std::size_t>(ch));
+    for (const std::int32_t ch : n.child) stack.push_back(static_cast<std::size_t>(ch));
   }
   return out;
 }

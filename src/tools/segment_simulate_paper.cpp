@@ -20,6 +20,13 @@ using segments::Aeg_certificate_kind;
 
 const char* kind_text(Aeg_certificate_kind k) { return segments::aeg_certificate_kind_names[static_cast<int>(k)]; }
 
+// Where a batch decided its signs, by name.
+Json signs_by(const segments::Aeg_phases& p) {
+  Json out = Json::object();
+  for (const auto& [name, signs] : p.named()) out[name] = signs;
+  return out;
+}
+
 }  // namespace
 
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
@@ -79,9 +86,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
                         {"flipped_in_place", b.flipped_in_place}, {"nodes_edited", b.nodes_edited},
                         {"certificates_made", b.certificates_made}, {"signs", b.signs}, {"held", b.held},
                         {"repeated", b.repeated},
-                        {"signs_by", {{"own_guard", b.phases.own_guard}, {"other_guard", b.phases.other_guard},
-                                      {"ties", b.phases.ties}, {"certificates", b.phases.certificates},
-                                      {"leaves", b.phases.leaves}}},
+                        {"signs_by", signs_by(b.phases)},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
       j["batch_list"] = list;

@@ -60,6 +60,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -67,6 +68,7 @@
 #include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
 #include "kvd/detail/segments/reroute.hpp"
+#include "kvd/segments/aeg_phases.hpp"
 #include "kvd/segments/cylindrical_bsp.hpp"
 #include "kvd/segments/segment_scene.hpp"
 
@@ -108,17 +110,7 @@ public:
     double update_seconds = 0;                // the tree and its certificates made again
     long signs = 0, held = 0;                 // decided by the update, and read from certificates in force
     long repeated = 0;                        // asked again in the batch, answered from its first decision
-    // Of `signs`, those decided by: the guards over the changing segments'
-    // own steps (above the nodes a reroute starts from, above a collinear
-    // endpoint's leaves, between nested frontiers), the guard over other
-    // segments' steps at the nodes where a changed key is decided, the ties
-    // on the paths above the nodes made again, the certificates (read at
-    // the instant, and made), and the endpoints' leaves found again. The
-    // rest decided the cuts made again and the flips' and collinear
-    // endpoints' checks.
-    struct Phases {
-      long own_guard = 0, other_guard = 0, ties = 0, certificates = 0, leaves = 0;
-    } phases;
+    Aeg_phases phases;                        // of `signs`, where they were decided
   };
 
   // The scene is copied; the run starts at its start. With `validate`, the
@@ -278,9 +270,15 @@ private:
   template <class F>
   auto counting(long& to, F f) const {
     const long before = pred_.counts().decided();
-    auto r = f();
-    to += pred_.counts().decided() - before;
-    return r;
+    const auto add = [&] { to += pred_.counts().decided() - before; };
+    if constexpr (std::is_void_v<decltype(f())>) {
+      f();
+      add();
+    } else {
+      auto r = f();
+      add();
+      return r;
+    }
   }
   // The nodes where a sign may change: the failing transient nodes and
   // endpoints' leaves, and below the roots every cut of a point or segment
@@ -371,7 +369,7 @@ private:
   kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;
-  mutable typename Batch::Phases phases_;  // of the batch being updated
+  mutable Aeg_phases phases_;  // of the batch being updated
 };
 
 }  // namespace kvd::segments
