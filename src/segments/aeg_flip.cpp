@@ -42,8 +42,6 @@ void along_wall(Cylindrical_bsp& t, std::size_t top, int side, const Site_point&
 
 bool walks(const Arrival& a) { return a.kind == Arrival::Kind::crossings || a.kind == Arrival::Kind::edges; }
 
-std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
-
 }  // namespace
 
 template <class K>

@@ -190,7 +190,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     deciding.erase(std::unique(deciding.begin(), deciding.end()), deciding.end());
     const long own = phases_.own_guard;
     const bool other_vanishes = [&] {
-      for (const std::size_t u : deciding)
+      for (const std::size_t u : deciding) {
+        if (point_cut(tree_.nodes[u]) && abscissa_clear(u, change.keys)) continue;
         for (const Arrival& a : log_.at[u]) {
           if (a.segment == s) continue;
           keys.clear();
@@ -198,6 +199,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
           for (const Key& k : keys)
             if (!change.keys.count(normal(k)) && vanishes(k)) return true;
         }
+      }
       return false;
     }();
     phases_.other_guard += phases_.own_guard - own;
@@ -288,6 +290,41 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   return out;
 }
 
+template <class K>
+bool Aeg_kinetic_bsp<K>::abscissa_clear(std::size_t u, const std::set<Key>& changed) const {
+  const Bsp_node& n = tree_.nodes[u];
+  const Site_point& y = n.point;
+  return counting(phases_.other_guard, [&] {
+    // Whether w's x order with y, s, is a change other than the keys'.
+    const auto meets = [&](const Site_point& w, const Segment_sign& s) {
+      return s.at_root && !changed.count({Key::Kind::x_order, std::min(w, y), std::max(w, y), 0, 0});
+    };
+    for (const std::optional<Site_point>& wall : {n.cell.left, n.cell.right})
+      if (wall && *wall != y && meets(*wall, pred_.compare_x(*wall, y, now_))) return false;
+    // Down the cells whose closed x-range holds y's abscissa now: a point
+    // cut decided by its value keeps it on one side (the points below the
+    // other lie strictly beyond), any other sign keeps both.
+    std::vector<std::size_t> stack{child(n, 0), child(n, 1)};
+    while (!stack.empty()) {
+      const Bsp_node& q = tree_.nodes[stack.back()];
+      stack.pop_back();
+      if (q.kind == Cut_kind::leaf) continue;
+      if (point_cut(q) && q.point != y) {
+        const Segment_sign s = pred_.compare_x(q.point, y, now_);
+        if (meets(q.point, s)) return false;
+        if (s.rule == Segment_rule::value) {
+          stack.push_back(child(q, s.sign > 0 ? 0 : 1));
+          continue;
+        }
+      }
+      stack.push_back(child(q, 0));
+      stack.push_back(child(q, 1));
+    }
+    return true;
+  });
+}
+
 template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::reroutes(const std::vector<Entry>&);
+template bool Aeg_kinetic_bsp<Exact_kernel>::abscissa_clear(std::size_t, const std::set<Key>&) const;
 
 }  // namespace kvd::segments

@@ -266,6 +266,14 @@ private:
     return !(k.kind == Segment_certificate_key::Kind::order_at && k.i == k.j) &&
            counting(phases_.own_guard, [&] { return pred_.sign_of(k, now_).at_root; });
   }
+  // Whether no wall of point cut u's cell and no point cut in its subtree
+  // meets u's point's abscissa now (a polynomial of their x order vanishes
+  // there) but by a key in `changed`: the points of the other segments'
+  // arrivals at u are among those, so none of their signs at u vanishes
+  // now (proofs/segment-local-update.md, "Rerouting on the paper's set",
+  // case 2). Only the cells whose x-range holds that abscissa now are
+  // searched; false also when the search meets a point there.
+  bool abscissa_clear(std::size_t u, const std::set<Segment_certificate_key>& changed) const;
   // f(), the signs it decided added to `to` (Batch::phases).
   template <class F>
   auto counting(long& to, F f) const {

@@ -20,6 +20,7 @@
 // sign symbolically, kvd/segments/segment_predicates.hpp).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -52,6 +53,9 @@ struct Bsp_node {
 // Whether a node's cut is vertical, through a point (a vertex or an
 // intersection cut).
 inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
+
+// The slot of a cut node's child `side` (0: left or below, 1: right or above).
+inline std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
 
 // The cell of child `side` of a cut (0: left or below, 1: right or above)
 // whose own cell is `c`: the cut's line becomes the child's wall, floor or
