@@ -272,11 +272,15 @@ TEST_CASE("walls crossing: a vertex event remakes the two leaves of B_{i-1} it m
   CHECK(b.failing == std::vector<Aeg_certificate_id>{transient(Site_point::endpoint(5), Site_point::endpoint(2), 0, {})});
   CHECK(b.replays == 2);
   CHECK(b.frontier_replays == 2);
-  // The guard over other segments' steps reads the log of s1.0's cut, the
-  // one node deciding the changed key: s1's and s3's steps there ask three
-  // signs, the x order of s1.0 and s1.1, s3.0 and s3.1 (each asked by three
-  // of their arrivals: the repeats are read from the first).
-  CHECK(b.phases.other_guard == 3);
+  // The guard over other segments' steps at s1.0's cut, the one node
+  // deciding the changed key, searches down s1.0's abscissa (x = 8): the x
+  // orders with s1.0 of its cell's walls, s0.0 and s0.1, and of the point
+  // cuts below whose cells hold x = 8 now, s1.1 (x = 10: only its left
+  // side is searched), s2.0 (x = 3: its right side) and s2.1 (the changed
+  // key: both sides). Only s1.1's was not asked before in the batch; s3's
+  // cuts (x = 1 and 15) lie in cells it does not search. Reading the log
+  // decided three: s1.1's, s3.0's and s3.1's.
+  CHECK(b.phases.other_guard == 1);
   CHECK(run.tree().text() == "(V s0.0 . (V s0.1 (E s0 . (V s1.0 (V s2.0 (V s3.0 . (E s3 . .)) (E s2 (E s3 . .) .)) "
                              "(V s1.1 (E s1 (V s2.1 (E s2 (E s3 . .) .) (E s3 . .)) .) (V s3.1 (E s3 . .) .)))) .))");
   CHECK(same_log(run, pred, b.time));
