@@ -132,31 +132,88 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // them again (below a top it does).
     std::set<Key> found;
     std::vector<std::size_t> deciding;  // every node where a changed key is decided
+    std::vector<std::size_t> above;     // the nodes above the tops
+    std::vector<std::size_t> ends;      // the tops, and the frontier nodes reached above none
+    // The keys of the segment's steps at node x (its block in x's log)
+    // against `cut` (x's own, or a side of x's cell).
+    const auto own_keys = [&](std::size_t x, std::pair<std::size_t, std::size_t> block,
+                              const Bsp_node& cut) -> const std::vector<Key>& {
+      keys.clear();
+      for (std::size_t i = block.first; i < block.second; ++i) decided_keys(cut, log_.at[x][i], keys);
+      return keys;
+    };
+    const auto block = [&](std::size_t x) { return rank_block(log_.at[x], rank, r); };
     std::vector<std::pair<std::size_t, bool>> stack{{0, false}};  // a node, and whether a top is above it
     while (!stack.empty()) {
       const auto [n, below] = stack.back();
       stack.pop_back();
       const Bsp_node& q = tree_.nodes[n];
-      if (cut_rank(q, rank) >= r) continue;
-      const std::vector<Arrival>& log = log_.at[n];
-      const auto [from, to] = rank_block(log, rank, r);
-      if (from == to) continue;
-      keys.clear();
-      for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
+      if (cut_rank(q, rank) >= r) {
+        if (!below) ends.push_back(n);
+        continue;
+      }
+      const auto steps = block(n);
+      if (steps.first == steps.second) continue;
+      const std::vector<Key>& here = own_keys(n, steps, q);
       bool top = false;
-      for (const Key& k : keys)
+      for (const Key& k : here)
         if (const Key x = normal(k); change.keys.count(x) > 0) {
           if (change.above.count(x) > 0) found.insert(x);
           deciding.push_back(n);
           top = !below;
-        } else if (!below && vanishes(k)) {
-          return {};
         }
-      if (top) change.tops.push_back(n);
+      if (top) {
+        change.tops.push_back(n);
+        ends.push_back(n);
+      } else if (!below) {
+        above.push_back(n);
+      }
       for (const std::int32_t ch : q.child) stack.emplace_back(static_cast<std::size_t>(ch), below || top);
     }
     if (found.size() != change.above.size()) return {};
     if (change.tops.empty()) return {};
+    const auto unchanged_vanishes = [&](std::size_t n) {
+      const std::vector<Key>& ks = own_keys(n, block(n), tree_.nodes[n]);
+      return std::any_of(ks.begin(), ks.end(), [&](const Key& k) { return !change.keys.count(normal(k)) && vanishes(k); });
+    };
+    for (const std::size_t u : change.tops)
+      if (unchanged_vanishes(u)) return {};
+    // The cuts above the ends are squeezed between the ends' points and
+    // their cells' walls, floor and roof: a sign of theirs that vanishes
+    // now makes one against the cell vanish (proofs/segment-local-update.md,
+    // "Rerouting on the paper's set", case 1). Where a changed key is one
+    // against the cell, or one vanishes or is a tie for good, every node
+    // above is asked.
+    const bool squeezed = std::all_of(ends.begin(), ends.end(), [&](std::size_t x) {
+      const Cell& c = tree_.nodes[x].cell;
+      const auto steps = block(x);
+      std::vector<Bsp_node> sides;
+      for (const std::optional<Site_point>& w : {c.left, c.right})
+        if (w) {
+          sides.emplace_back().kind = Cut_kind::vertex;
+          sides.back().point = *w;
+        }
+      for (const std::optional<std::uint32_t>& j : {c.floor, c.roof})
+        if (j) {
+          sides.emplace_back().kind = Cut_kind::edge;
+          sides.back().segment = *j;
+        }
+      // A tie for good against a side (decided by the perturbation) may
+      // hide one above whose leading ε-coefficient vanishes now.
+      const auto settled = [&](const Key& k) {
+        return !change.keys.count(normal(k)) && counting(phases_.own_guard, [&] {
+          const Segment_sign sign = pred_.sign_of(k, now_);
+          return !sign.at_root && sign.rule != Segment_rule::perturbation;
+        });
+      };
+      return std::all_of(sides.begin(), sides.end(), [&](const Bsp_node& cut) {
+        const std::vector<Key>& ks = own_keys(x, steps, cut);
+        return std::all_of(ks.begin(), ks.end(), settled);
+      });
+    });
+    if (!squeezed)
+      for (const std::size_t n : above)
+        if (unchanged_vanishes(n)) return {};
     // The frontier node above each certificate's node (a transient cell, the
     // leaf beside an endpoint); and no tie at now of the segment's points
     // among the keys', or of the segment, with a cut on the path above the
