@@ -133,13 +133,12 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     std::set<Key> found;
     std::vector<std::size_t> deciding;  // every node where a changed key is decided
     std::vector<std::size_t> above;     // the nodes above the tops
-    std::vector<std::size_t> ends;      // the tops, and the frontier nodes reached above none
-    // The keys of the segment's steps at node x (its block in x's log)
-    // against `cut` (x's own, or a side of x's cell).
-    const auto own_keys = [&](std::size_t x, std::pair<std::size_t, std::size_t> block,
-                              const Bsp_node& cut) -> const std::vector<Key>& {
+    std::vector<std::size_t> ends;      // the tops, and the frontier nodes the segment reaches below no top
+    // The keys of the segment's steps at node x (`range`, its block in x's
+    // log) against x's cut, in `keys`.
+    const auto own_keys = [&](std::size_t x, std::pair<std::size_t, std::size_t> range) -> const std::vector<Key>& {
       keys.clear();
-      for (std::size_t i = block.first; i < block.second; ++i) decided_keys(cut, log_.at[x][i], keys);
+      for (std::size_t i = range.first; i < range.second; ++i) decided_keys(tree_.nodes[x], log_.at[x][i], keys);
       return keys;
     };
     const auto block = [&](std::size_t x) { return rank_block(log_.at[x], rank, r); };
@@ -148,13 +147,13 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       const auto [n, below] = stack.back();
       stack.pop_back();
       const Bsp_node& q = tree_.nodes[n];
+      const auto steps = block(n);
+      if (steps.first == steps.second) continue;
       if (cut_rank(q, rank) >= r) {
         if (!below) ends.push_back(n);
         continue;
       }
-      const auto steps = block(n);
-      if (steps.first == steps.second) continue;
-      const std::vector<Key>& here = own_keys(n, steps, q);
+      const std::vector<Key>& here = own_keys(n, steps);
       bool top = false;
       for (const Key& k : here)
         if (const Key x = normal(k); change.keys.count(x) > 0) {
@@ -173,45 +172,16 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     if (found.size() != change.above.size()) return {};
     if (change.tops.empty()) return {};
     const auto unchanged_vanishes = [&](std::size_t n) {
-      const std::vector<Key>& ks = own_keys(n, block(n), tree_.nodes[n]);
+      const std::vector<Key>& ks = own_keys(n, block(n));
       return std::any_of(ks.begin(), ks.end(), [&](const Key& k) { return !change.keys.count(normal(k)) && vanishes(k); });
     };
     for (const std::size_t u : change.tops)
       if (unchanged_vanishes(u)) return {};
-    // The cuts above the ends are squeezed between the ends' points and
-    // their cells' walls, floor and roof: a sign of theirs that vanishes
-    // now makes one against the cell vanish (proofs/segment-local-update.md,
-    // "Rerouting on the paper's set", case 1). Where a changed key is one
-    // against the cell, or one vanishes or is a tie for good, every node
-    // above is asked.
-    const bool squeezed = std::all_of(ends.begin(), ends.end(), [&](std::size_t x) {
-      const Cell& c = tree_.nodes[x].cell;
-      const auto steps = block(x);
-      std::vector<Bsp_node> sides;
-      for (const std::optional<Site_point>& w : {c.left, c.right})
-        if (w) {
-          sides.emplace_back().kind = Cut_kind::vertex;
-          sides.back().point = *w;
-        }
-      for (const std::optional<std::uint32_t>& j : {c.floor, c.roof})
-        if (j) {
-          sides.emplace_back().kind = Cut_kind::edge;
-          sides.back().segment = *j;
-        }
-      // A tie for good against a side (decided by the perturbation) may
-      // hide one above whose leading ε-coefficient vanishes now.
-      const auto settled = [&](const Key& k) {
-        return !change.keys.count(normal(k)) && counting(phases_.own_guard, [&] {
-          const Segment_sign sign = pred_.sign_of(k, now_);
-          return !sign.at_root && sign.rule != Segment_rule::perturbation;
-        });
-      };
-      return std::all_of(sides.begin(), sides.end(), [&](const Bsp_node& cut) {
-        const std::vector<Key>& ks = own_keys(x, steps, cut);
-        return std::all_of(ks.begin(), ks.end(), settled);
-      });
-    });
-    if (!squeezed)
+    // The cuts above the ends lie beyond the sides of the ends' cells from
+    // the ends' points: a sign of theirs that vanishes now makes one against
+    // a side vanish (squeezed). Where that cannot tell, every node above is
+    // asked.
+    if (!squeezed(ends, r, change.keys))
       for (const std::size_t n : above)
         if (unchanged_vanishes(n)) return {};
     // The frontier node above each certificate's node (a transient cell, the
@@ -242,7 +212,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // changed line for good, hidden behind a wall, as in the degenerate
     // family and the small-integer scenes) changes unseen by any
     // certificate of the set.
-    // (Its signs are counted apart from the other guards': Batch::phases.)
+    // (Its signs are counted apart from the other guards': Batch::phases;
+    // abscissa_clear counts its own, the log's are moved there below.)
     std::sort(deciding.begin(), deciding.end());
     deciding.erase(std::unique(deciding.begin(), deciding.end()), deciding.end());
     const long own = phases_.own_guard;
@@ -381,7 +352,55 @@ bool Aeg_kinetic_bsp<K>::abscissa_clear(std::size_t u, const std::set<Key>& chan
   });
 }
 
+template <class K>
+bool Aeg_kinetic_bsp<K>::squeezed(const std::vector<std::size_t>& ends, std::size_t r,
+                                  const std::set<Key>& changed) const {
+  // A tie for good against a side (decided by the perturbation) may hide
+  // one above whose leading ε-coefficient vanishes now.
+  const auto settled = [&](const Key& k) {
+    return !changed.count(normal(k)) && counting(phases_.own_guard, [&] {
+      const Segment_sign sign = pred_.sign_of(k, now_);
+      return !sign.at_root && sign.rule != Segment_rule::perturbation;
+    });
+  };
+  // The floor (side 0) or roof (1) of the cell of segment j's cut above x.
+  const auto beyond = [&](std::size_t x, std::uint32_t j, int side) -> std::optional<std::uint32_t> {
+    for (std::int32_t a = tree_.nodes[x].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+      if (const Bsp_node& n = tree_.nodes[static_cast<std::size_t>(a)]; n.kind == Cut_kind::edge && n.segment == j)
+        return side ? n.cell.roof : n.cell.floor;
+    return std::nullopt;
+  };
+  std::vector<Key> keys;
+  for (const std::size_t x : ends) {
+    const Cell& cell = tree_.nodes[x].cell;
+    const auto [from, to] = rank_block(log_.at[x], scene_.rank, r);
+    for (const Bsp_node& side : cell_sides(cell)) {
+      keys.clear();
+      for (std::size_t i = from; i < to; ++i) decided_keys(side, log_.at[x][i], keys);
+      if (!std::all_of(keys.begin(), keys.end(), settled)) return false;
+    }
+    // A point on the floor (a crossing with it) has no key against it; an
+    // edge cut above meeting it there meets that segment there, so the
+    // floor of the segment's own cut.
+    for (std::size_t i = from; i < to; ++i) {
+      const Arrival& a = log_.at[x][i];
+      const bool locates = a.kind == Arrival::Kind::vertex || a.kind == Arrival::Kind::intersection;
+      for (const Site_point& q : {a.a, a.b}) {
+        for (const int s : {0, 1})
+          if (const std::optional<std::uint32_t> j = s ? cell.roof : cell.floor; j && q.on(*j))
+            if (const std::optional<std::uint32_t> f = beyond(x, *j, s);
+                f && !q.on(*f) && !settled({Key::Kind::side, q, {}, *f, 0}))
+              return false;
+        if (locates) break;
+      }
+    }
+  }
+  return true;
+}
+
 template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::reroutes(const std::vector<Entry>&);
+template bool Aeg_kinetic_bsp<Exact_kernel>::squeezed(const std::vector<std::size_t>&, std::size_t,
+                                                      const std::set<Key>&) const;
 template bool Aeg_kinetic_bsp<Exact_kernel>::abscissa_clear(std::size_t, const std::set<Key>&) const;
 
 }  // namespace kvd::segments

@@ -272,8 +272,17 @@ private:
   // arrivals at u are among those, so none of their signs at u vanishes
   // now (proofs/segment-local-update.md, "Rerouting on the paper's set",
   // case 2). Only the cells whose x-range holds that abscissa now are
-  // searched; false also when the search meets a point there.
+  // searched; false as soon as one such sign vanishes now and is not a
+  // changed key (the caller then reads u's log).
   bool abscissa_clear(std::size_t u, const std::set<Segment_certificate_key>& changed) const;
+  // Whether the signs of the steps of the segment of rank r at each node
+  // of `ends` against the sides of its cell settle every sign of those
+  // steps above: none vanishes now, is a key in `changed` (normal forms)
+  // or is a tie for good. A point of a step on its cell's floor or roof is
+  // asked against the floor or roof of that segment's own cut instead
+  // (proofs/segment-local-update.md, "Rerouting on the paper's set", case 1).
+  bool squeezed(const std::vector<std::size_t>& ends, std::size_t r,
+                const std::set<Segment_certificate_key>& changed) const;
   // f(), the signs it decided added to `to` (Batch::phases).
   template <class F>
   auto counting(long& to, F f) const {

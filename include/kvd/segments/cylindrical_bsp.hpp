@@ -57,6 +57,23 @@ inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || 
 // The slot of a cut node's child `side` (0: left or below, 1: right or above).
 inline std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
 
+// The cuts a cell is bounded by: its walls as point cuts, its floor and
+// roof as edge cuts (for the keys a step would decide against them).
+inline std::vector<Bsp_node> cell_sides(const Cell& c) {
+  std::vector<Bsp_node> sides;
+  for (const std::optional<Site_point>& w : {c.left, c.right})
+    if (w) {
+      sides.emplace_back().kind = Cut_kind::vertex;
+      sides.back().point = *w;
+    }
+  for (const std::optional<std::uint32_t>& j : {c.floor, c.roof})
+    if (j) {
+      sides.emplace_back().kind = Cut_kind::edge;
+      sides.back().segment = *j;
+    }
+  return sides;
+}
+
 // The cell of child `side` of a cut (0: left or below, 1: right or above)
 // whose own cell is `c`: the cut's line becomes the child's wall, floor or
 // roof.
