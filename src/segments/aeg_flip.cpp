@@ -40,7 +40,7 @@ void along_wall(Cylindrical_bsp& t, std::size_t top, int side, const Site_point&
   }
 }
 
-bool walks(const Arrival& a) { return a.kind == Arrival::Kind::crossings || a.kind == Arrival::Kind::edges; }
+bool walks(const Arrival& a) { return !locates(a); }
 
 }  // namespace
 
@@ -96,7 +96,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(const std::vector<std::size_t>& turning, 
       if (above_ties(v, n.point, false) != v || above_ties(v, p2.point, false) != v) return false;
       const std::vector<Arrival>& log = log_.at[v];
       const auto own = std::find_if(log.begin(), log.end(), [&](const Arrival& a) {
-        return !walks(a) && a.segment == s && a.a == n.point;
+        return locates(a) && a.segment == s && a.a == n.point;
       });
       if (own == log.end()) return false;
       f.own = static_cast<std::size_t>(own - log.begin());

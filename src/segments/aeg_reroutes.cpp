@@ -38,15 +38,12 @@ std::size_t latest(const Key& k, const std::vector<std::size_t>& rank) {
 // abscissa of p is the x order of p and their crossing. (Of a crossing of
 // a and b, line a is taken: both vanish when the three lines meet.)
 Key normal(const Key& k) {
-  const auto x_order = [](const Site_point& p, const Site_point& q) {
-    return Key{Key::Kind::x_order, std::min(p, q), std::max(p, q), 0, 0};
-  };
   switch (k.kind) {
     case Key::Kind::x_order: return k;
-    case Key::Kind::order_at: return k.i == k.j ? k : x_order(k.p, Site_point::crossing(k.i, k.j));
+    case Key::Kind::order_at: return k.i == k.j ? k : x_order_key(k.p, Site_point::crossing(k.i, k.j));
     case Key::Kind::side: {
       const std::uint32_t a = k.p.kind == Site_point::Kind::endpoint ? k.p.a / 2 : (k.p.a != k.i ? k.p.a : k.p.b);
-      return x_order(k.p, Site_point::crossing(a, k.i));
+      return x_order_key(k.p, Site_point::crossing(a, k.i));
     }
   }
   return k;
@@ -325,7 +322,7 @@ bool Aeg_kinetic_bsp<K>::abscissa_clear(std::size_t u, const std::set<Key>& chan
   return counting(phases_.other_guard, [&] {
     // Whether w's x order with y, s, is a change other than the keys'.
     const auto meets = [&](const Site_point& w, const Segment_sign& s) {
-      return s.at_root && !changed.count({Key::Kind::x_order, std::min(w, y), std::max(w, y), 0, 0});
+      return s.at_root && !changed.count(x_order_key(w, y));
     };
     for (const std::optional<Site_point>& wall : {n.cell.left, n.cell.right})
       if (wall && *wall != y && meets(*wall, pred_.compare_x(*wall, y, now_))) return false;
@@ -384,14 +381,13 @@ bool Aeg_kinetic_bsp<K>::squeezed(const std::vector<std::size_t>& ends, std::siz
     // floor of the segment's own cut.
     for (std::size_t i = from; i < to; ++i) {
       const Arrival& a = log_.at[x][i];
-      const bool locates = a.kind == Arrival::Kind::vertex || a.kind == Arrival::Kind::intersection;
       for (const Site_point& q : {a.a, a.b}) {
         for (const int s : {0, 1})
           if (const std::optional<std::uint32_t> j = s ? cell.roof : cell.floor; j && q.on(*j))
             if (const std::optional<std::uint32_t> f = beyond(x, *j, s);
                 f && !q.on(*f) && !settled({Key::Kind::side, q, {}, *f, 0}))
               return false;
-        if (locates) break;
+        if (locates(a)) break;
       }
     }
   }

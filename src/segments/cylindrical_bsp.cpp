@@ -341,22 +341,21 @@ std::size_t cut_rank(const Bsp_node& node, const std::vector<std::size_t>& rank)
 void decided_keys(const Bsp_node& node, const Arrival& a, std::vector<Segment_certificate_key>& out) {
   using Key = Segment_certificate_key;
   const auto x_order = [&](const Site_point& p, const Site_point& q) {
-    if (p != q) out.push_back({Key::Kind::x_order, std::min(p, q), std::max(p, q), 0, 0});
+    if (p != q) out.push_back(x_order_key(p, q));
   };
   const auto side = [&](const Site_point& p, std::uint32_t s) {
     if (!p.on(s)) out.push_back({Key::Kind::side, p, {}, s, 0});
   };
-  const bool locates = a.kind == Arrival::Kind::vertex || a.kind == Arrival::Kind::intersection;
   switch (node.kind) {
     case Cut_kind::leaf: return;
     case Cut_kind::vertex:
     case Cut_kind::intersection:
       x_order(a.a, node.point);
-      if (!locates) x_order(a.b, node.point);
+      if (!locates(a)) x_order(a.b, node.point);
       return;
     case Cut_kind::edge: {
       const std::uint32_t i = a.segment, j = node.segment;
-      if (locates) return side(a.a, j);
+      if (locates(a)) return side(a.a, j);
       // Segment_predicates::order_at: a point on either line asks the side of the other.
       for (const Site_point& q : {a.a, a.b}) {
         if (q.on(i)) side(q, j);

@@ -27,6 +27,7 @@
 // W may have either sign and is taken into every sign it enters.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <compare>
 #include <cstdint>
@@ -80,6 +81,12 @@ struct Segment_certificate_key {
   std::uint32_t i = 0, j = 0;   // side: the segment i; order_at: the lines of i and j
   friend auto operator<=>(const Segment_certificate_key&, const Segment_certificate_key&) = default;
 };
+
+// The key of the x order of points p and q, whichever way round they are
+// asked (Segment_predicates::compare_x decides it in this order).
+inline Segment_certificate_key x_order_key(const Site_point& p, const Site_point& q) {
+  return {Segment_certificate_key::Kind::x_order, std::min(p, q), std::max(p, q), 0, 0};
+}
 
 // A hash of keys, for the tables of certificates a kinetic run looks up
 // for every sign it decides.

@@ -32,6 +32,10 @@ struct Arrival {
   friend bool operator==(const Arrival&, const Arrival&) = default;
 };
 
+// Whether an arrival locates a point (a vertex or an intersection), not
+// walks a part.
+inline bool locates(const Arrival& a) { return a.kind == Arrival::Kind::vertex || a.kind == Arrival::Kind::intersection; }
+
 // The arrivals at every node, and the node slots free for reuse. A node's
 // arrivals are in build order, so by the priority rank of their segment, and
 // within one segment by phase: vertex, crossings, intersection, edges. They
