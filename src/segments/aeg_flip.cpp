@@ -22,24 +22,6 @@ struct Flip_site {
   std::size_t own = 0;  // the place of v's own arrival in v's log
 };
 
-std::optional<Site_point>& wall(Cell& c, int side) { return side ? c.right : c.left; }
-
-// Visits the nodes of `top`'s subtree whose cell has its wall on `side` at
-// w, top down; `visit` may move the wall of the node it is given.
-template <class Visit>
-void along_wall(Cylindrical_bsp& t, std::size_t top, int side, const Site_point& w, const Visit& visit) {
-  std::vector<std::size_t> stack{top};
-  while (!stack.empty()) {
-    const std::size_t x = stack.back();
-    stack.pop_back();
-    Bsp_node& q = t.nodes[x];
-    if (wall(q.cell, side) != w) continue;
-    if (q.kind != Cut_kind::leaf)
-      for (const std::int32_t c : q.child) stack.push_back(static_cast<std::size_t>(c));
-    visit(x);
-  }
-}
-
 bool walks(const Arrival& a) { return !locates(a); }
 
 }  // namespace

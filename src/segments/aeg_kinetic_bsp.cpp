@@ -556,7 +556,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
                         // frontier node may have made smaller than the old one.
                         recelled.emplace_back(to, from);
                       },
-                      [&](std::size_t n) { recelled.emplace_back(n, from); }});
+                      [&](std::size_t n) { recelled.emplace_back(n, from); },
+                      [&](std::size_t o, const Cell& now) { return walls_renamed(o, now); }});
   // Every subtree is made again before any certificate: an endpoint may move
   // from one frontier node to another.
   for (const auto& [v, frontier, whole] : roots) {

@@ -209,7 +209,7 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   std::vector<Site_point> was, is;
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
-                     {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}});
+                     {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}, {}});
   for (const Replay_root& root : roots) {
     const std::size_t v = root.node;
     before.push_back(tree_.text(v));

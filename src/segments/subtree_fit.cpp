@@ -131,6 +131,14 @@ void Subtree_fit<K>::fit(std::size_t cell, const std::vector<Arrival>& all, std:
     refresh_cells(cell);
     return taken(same);
   }
+  // Or one whose cell differs only in walls that moved to the same abscissa
+  // without any of its signs there changing: it is renamed.
+  if (const auto moved = renamable(cell, steps, spare); moved != spare.end()) {
+    rename_walls(*moved, tree_.nodes[cell].cell);
+    move_node(*moved, cell);
+    refresh_cells(cell);
+    return taken(moved);
+  }
   // Otherwise the cuts of the first segment that cuts the cell; when an old
   // subtree has the same cut on top, its cells are fitted to the new ones
   // in turn (the cell's new wall changes only the arrivals that meet it).
@@ -160,6 +168,48 @@ void Subtree_fit<K>::fit(std::size_t cell, const std::vector<Arrival>& all, std:
     discard(cell, false);
   }
   builder_.replay(cell, steps);
+}
+
+namespace {
+
+// The walk ends in `log` at a wall of `was` that moved, named as in `now`.
+void rename_ends(std::vector<Arrival>& log, const Cell& was, const Cell& now) {
+  for (Arrival& a : log)
+    if (!locates(a))
+      for (Site_point* q : {&a.a, &a.b})
+        for (const int side : {0, 1})
+          if (wall(was, side) != wall(now, side) && *q == *wall(was, side)) {
+            *q = *wall(now, side);
+            break;
+          }
+}
+
+}  // namespace
+
+template <class K>
+std::vector<std::size_t>::iterator Subtree_fit<K>::renamable(std::size_t cell, const std::vector<Arrival>& steps,
+                                                             std::vector<std::size_t>& spare) {
+  if (!hooks_.renamed) return spare.end();
+  const Cell& now = tree_.nodes[cell].cell;
+  return std::find_if(spare.begin(), spare.end(), [&](std::size_t o) {
+    const Cell& was = tree_.nodes[o].cell;
+    // Both walls there before and now, one or both moved, none to the other's place.
+    if (dirty_.count(o) || was.floor != now.floor || was.roof != now.roof || was == now || !was.left ||
+        !was.right || !now.left || !now.right || now.left == was.right || now.right == was.left ||
+        log_.at[o].size() != steps.size())
+      return false;
+    std::vector<Arrival> log = log_.at[o];
+    rename_ends(log, was, now);
+    return log == steps && hooks_.renamed(o, now);
+  });
+}
+
+template <class K>
+void Subtree_fit<K>::rename_walls(std::size_t o, const Cell& now) {
+  const Cell was = tree_.nodes[o].cell;
+  for (const int side : {0, 1})
+    if (wall(was, side) != wall(now, side))
+      along_wall(tree_, o, side, *wall(was, side), [&](std::size_t x) { rename_ends(log_.at[x], was, now); });
 }
 
 template <class K>

@@ -283,6 +283,15 @@ private:
   // (proofs/segment-local-update.md, "Rerouting on the paper's set", case 1).
   bool squeezed(const std::vector<std::size_t>& ends, std::size_t r,
                 const std::set<Segment_certificate_key>& changed) const;
+  // Whether old subtree o, made in its cell before, is the subtree of the
+  // cell `now` with the walls that moved renamed: each moved wall meets its
+  // new one's abscissa now, and no point cut along it and no floor and
+  // roof of a leaf along it meets that abscissa now (by value, off any 0/0
+  // point), so every sign its steps decided with the old wall stays with
+  // the new one (proofs/segment-local-update.md, "Cells kept", walls
+  // renamed). The caller has checked the rest: the log renamed is the
+  // cell's arrivals, and o holds no change.
+  bool walls_renamed(std::size_t o, const Cell& now) const;
   // f(), the signs it decided added to `to` (Batch::phases).
   template <class F>
   auto counting(long& to, F f) const {

@@ -57,6 +57,27 @@ inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || 
 // The slot of a cut node's child `side` (0: left or below, 1: right or above).
 inline std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
 
+// A cell's wall on `side` (0: left, 1: right).
+inline std::optional<Site_point>& wall(Cell& c, int side) { return side ? c.right : c.left; }
+inline const std::optional<Site_point>& wall(const Cell& c, int side) { return side ? c.right : c.left; }
+
+// Visits the nodes of top's subtree whose cell has its wall on `side` at w,
+// top down: the nodes along that wall, those LeftShave visits (seed 003,
+// section 3.1.2). `visit` may change the wall of the node it is given.
+template <class Tree, class Visit>
+void along_wall(Tree& tree, std::size_t top, int side, const Site_point& w, const Visit& visit) {
+  std::vector<std::size_t> stack{top};
+  while (!stack.empty()) {
+    const std::size_t x = stack.back();
+    stack.pop_back();
+    const Bsp_node& q = tree.nodes[x];
+    if (wall(q.cell, side) != w) continue;
+    if (q.kind != Cut_kind::leaf)
+      for (const std::int32_t c : q.child) stack.push_back(static_cast<std::size_t>(c));
+    visit(x);
+  }
+}
+
 // The cuts a cell is bounded by: its walls as point cuts, its floor and
 // roof as edge cuts (for the keys a step would decide against them).
 inline std::vector<Bsp_node> cell_sides(const Cell& c) {

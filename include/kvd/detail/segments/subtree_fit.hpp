@@ -7,7 +7,9 @@
 // frontier replay changes one segment's steps; the run on the paper's set
 // drops those gone). Each run keeps its certificates by node slot, so it is
 // told when a node's are to go (forget) or move to another slot (moved), and
-// which nodes kept whole got a new cell (recelled, optional).
+// which nodes kept whole got a new cell (recelled, optional). A run that
+// records no sign below the node as a certificate may let the fit keep an
+// old subtree whose cell's walls moved (renamed, optional).
 #pragma once
 
 #include <cstddef>
@@ -25,6 +27,10 @@ struct Subtree_fit_hooks {
   std::function<void(std::size_t)> forget;              // the node's certificates go
   std::function<void(std::size_t, std::size_t)> moved;  // a node's certificates move from one slot to another
   std::function<void(std::size_t)> recelled;            // a node kept whole got a new cell
+  // Whether old subtree o keeps every sign of its steps when its cell's
+  // moved walls are renamed, the new cell being `now` (the caller's check:
+  // proofs/segment-local-update.md, "Cells kept", walls renamed).
+  std::function<bool(std::size_t o, const Cell& now)> renamed;
 };
 
 template <class K>
@@ -58,6 +64,13 @@ private:
                                                                         const std::vector<Arrival>& arrivals,
                                                                         std::size_t to);
   void fit(std::size_t cell, const std::vector<Arrival>& steps, std::vector<std::size_t>& spare);
+  // The old subtree of `spare` not dirty, with the cell's floor and roof,
+  // whose log is `steps` once the walls of its cell that moved are named as
+  // the new ones, and that hooks.renamed accepts; or none.
+  std::vector<std::size_t>::iterator renamable(std::size_t cell, const std::vector<Arrival>& steps,
+                                               std::vector<std::size_t>& spare);
+  // The walk ends at o's moved walls named as cell's, in the logs along them.
+  void rename_walls(std::size_t o, const Cell& now);
   // Node `from`'s cut, children and log move to slot `to`, which keeps its
   // parent and cell.
   void move_node(std::size_t from, std::size_t to);
