@@ -895,7 +895,8 @@ TEST_CASE("kvd bench aeg-cost counts an event's cost of both segment runs, or wr
     CHECK(std::stod(local["repeated_mean"]) == 0);
     // and tells where it decided them: some of its signs, never more.
     double phases = 0;
-    for (const char* p : {"own_guard_mean", "other_guard_mean", "ties_mean", "certificates_mean", "leaves_mean"}) {
+    for (const char* p :
+         {"own_guard_mean", "other_guard_mean", "ties_mean", "certificates_mean", "leaves_mean", "walls_mean"}) {
       CHECK(local[p].empty());
       phases += std::stod(paper[p]);
     }

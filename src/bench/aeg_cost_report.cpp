@@ -34,8 +34,8 @@ std::string phases_csv(const Run_row& r) {
 std::string phases_table(const std::vector<Run_row>& rows) {
   std::string out =
       "| n | m | signs decided: mean | own steps' guard | other steps' guard | ties | certificates | endpoints' "
-      "leaves | the rest | other steps' guard: max |\n"
-      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      "leaves | walls renamed | the rest | other steps' guard: max |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Run_row& r : rows)
     if (r.phased) {
       double rest = r.signs_mean;
@@ -113,8 +113,9 @@ std::string markdown(const Config& c, const std::vector<Run_row>& rows, bool plo
       "the changing segments' own steps (above the nodes a reroute starts from, above a collinear endpoint's "
       "leaves, between nested frontiers), the guard over other segments' steps at the nodes where a changed key "
       "is decided (and its worst batch), the ties on the paths above the nodes made again, the certificates (read "
-      "at the instant, and made), the endpoints' leaves found again; the rest made the cuts again and checked "
-      "flips and collinear endpoints.\n\n" +
+      "at the instant, and made), the endpoints' leaves found again, the checks that an old subtree keeps its "
+      "signs with a moved wall renamed; the rest made the cuts again and checked flips and collinear "
+      "endpoints.\n\n" +
       phases_table(rows);
   if (plotted)
     out += "\n## Plot\n\nAbove, the mean signs per batch against n (log scales: a straight line is a power of n); "
