@@ -282,9 +282,11 @@ void Aeg_kinetic_bsp<K>::make_transient(std::size_t v) {
 }
 
 template <class K>
-void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from) {
+void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from, bool near) {
   // The leaf beside p: its floor and roof are p's neighbours.
-  const std::size_t v = counting(phases_.leaves, [&] { return aeg_leaf(tree_, pred_, now_, e, from); });
+  const std::size_t v = counting(phases_.leaves, [&] {
+    return aeg_leaf(tree_, pred_, now_, e, !near || from == 0 || inside(e, from) ? from : 0);
+  });
   leaf_[e] = v;
   beside_[v].push_back(e);
   const Cell& c = tree_.nodes[v].cell;
@@ -303,12 +305,21 @@ void Aeg_kinetic_bsp<K>::detach(std::size_t e) {
 }
 
 template <class K>
-void Aeg_kinetic_bsp<K>::remake_beside(std::size_t n, std::size_t from) {
+void Aeg_kinetic_bsp<K>::remake_beside(std::size_t n, std::size_t from, bool near) {
   const auto it = beside_.find(n);
   if (it == beside_.end()) return;
   const std::vector<std::size_t> endpoints = std::move(it->second);
   beside_.erase(it);
-  for (const std::size_t e : endpoints) make_endpoint(e, from);
+  for (const std::size_t e : endpoints) make_endpoint(e, from, near);
+}
+
+template <class K>
+bool Aeg_kinetic_bsp<K>::inside(std::size_t e, std::size_t n) const {
+  const Site_point p = Site_point::endpoint(e);
+  const Cell& c = tree_.nodes[n].cell;
+  const auto is = [](const Segment_sign& s, int side) { return s.rule == Segment_rule::value && s.sign == side; };
+  return (!c.left || is(pred_.compare_x(p, *c.left, now_), 1)) && (!c.right || is(pred_.compare_x(p, *c.right, now_), -1)) &&
+         (!c.floor || is(pred_.side(p, *c.floor, now_), 1)) && (!c.roof || is(pred_.side(p, *c.roof, now_), -1));
 }
 
 template <class K>
@@ -525,6 +536,9 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   // endpoints are found again from.
   std::vector<std::pair<std::size_t, std::size_t>> homeless, recelled;
   std::size_t from = 0;
+  // The frontier roots and those replayed whole: an endpoint below one may
+  // have moved to another's, so it is looked for there only while inside.
+  std::set<std::size_t> near;
   const auto unmake = [&](std::size_t n) {
     if (const auto it = transient_.find(n); it != transient_.end()) {
       spare_.emplace(it->second.id.cell, it->second);
@@ -561,7 +575,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   // Every subtree is made again before any certificate: an endpoint may move
   // from one frontier node to another.
   for (const auto& [v, frontier, whole] : roots) {
-    from = frontier || whole ? 0 : v;
+    from = v;
+    if (frontier || whole) near.insert(v);
     const std::string text = tree_.text(v);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
@@ -613,8 +628,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   }
   // The endpoints beside a node gone, and beside a node kept whose cell
   // moved (it may no longer be the leaf beside them), found again.
-  for (const auto& [e, up] : homeless) make_endpoint(e, up);
-  for (const auto& [n, up] : recelled) remake_beside(n, up);
+  for (const auto& [e, up] : homeless) make_endpoint(e, up, near.count(up) > 0);
+  for (const auto& [n, up] : recelled) remake_beside(n, up, near.count(up) > 0);
   spare_.clear();  // cells gone with their nodes
   b.nodes_rebuilt += builder.added();
   // A crossing cut below a root before and nowhere now: its location, logged
