@@ -124,7 +124,7 @@ void bind_paper_segments(py::module_& m) {
       .def("advance", &Paper_segments::advance,
            "Processes the next batch and returns it (time, failing [(kind, of)], changed, certificates,\n"
            "certificates_made, replays, frontier_replays, nodes_rebuilt, flipped_in_place, nodes_edited, signs, held,\n"
-           "repeated, signs_by {own_guard, other_guard, ties, certificates, leaves}, update_seconds, "
+           "repeated, signs_by {own_guard, other_guard, ties, certificates, leaves, walls}, update_seconds, "
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),
