@@ -31,11 +31,9 @@ bool Aeg_kinetic_bsp<K>::walls_renamed(std::size_t o, const Cell& now) const {
         if (point_cut(n)) {
           clear = by_value(pred_.compare_x(p, n.point, now_));
         } else if (n.kind == Cut_kind::leaf && n.cell.floor && n.cell.roof) {
-          const std::uint32_t f = *n.cell.floor, g = *n.cell.roof;
-          if (p.on(f) && p.on(g)) clear = false;
-          else if (p.on(f)) clear = by_value(pred_.side(p, g, now_));
-          else if (p.on(g)) clear = by_value(pred_.side(p, f, now_));
-          else clear = by_value(pred_.order_at(p, f, g, now_));
+          // (order_at asks p's side of the other line when p lies on one,
+          // and is 0 by identity when on both: no value, not clear.)
+          clear = by_value(pred_.order_at(p, *n.cell.floor, *n.cell.roof, now_));
         }
       });
       if (!clear) return false;
