@@ -3,7 +3,9 @@
 // "Cells kept").
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
+#include <tuple>
 #include <utility>
 
 #include "kvd/detail/kernel/instantiate.hpp"
@@ -57,7 +59,7 @@ void Subtree_fit<K>::remake(std::size_t v, std::size_t r, const std::vector<Arri
   const auto [from, to] = rank_block(arrivals, scene_.rank, r);
   builder_.replay(v, std::vector<Arrival>(arrivals.begin() + static_cast<std::ptrdiff_t>(from),
                                           arrivals.begin() + static_cast<std::ptrdiff_t>(to)));
-  for (auto& [cell, steps] : cells_below(v, r, arrivals, to)) fit(cell, steps, spare);
+  fit_cells(cells_below(v, r, arrivals, to), spare);
   for (const std::size_t o : spare) discard(o, true);
 }
 
@@ -112,62 +114,132 @@ std::vector<Arrival> in_cell(const std::vector<Arrival>& steps, const Cell& cell
   return out;
 }
 
+// What an old subtree's log and a cell's arrivals share, ignoring where the
+// walks end (a moved wall renames them): the points located and the
+// segments walking, sorted.
+using Arrival_key = std::tuple<Arrival::Kind, std::uint32_t, Site_point>;
+
+std::vector<Arrival_key> arrival_keys(const std::vector<Arrival>& log) {
+  std::vector<Arrival_key> keys;
+  keys.reserve(log.size());
+  for (const Arrival& a : log) keys.emplace_back(a.kind, a.segment, locates(a) ? a.a : Site_point{});
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+std::size_t shared(const std::vector<Arrival_key>& a, const std::vector<Arrival_key>& b) {
+  std::size_t n = 0;
+  for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end();) {
+    if (*i < *j) ++i;
+    else if (*j < *i) ++j;
+    else ++n, ++i, ++j;
+  }
+  return n;
+}
+
+int sides_shared(const Cell& a, const Cell& b) {
+  return (a.left == b.left) + (a.right == b.right) + (a.floor == b.floor) + (a.roof == b.roof);
+}
+
+bool same_cut(const Bsp_node& a, const Bsp_node& b) {
+  return a.kind == b.kind && (a.kind == Cut_kind::edge ? a.segment == b.segment : a.point == b.point);
+}
+
 }  // namespace
 
 template <class K>
-void Subtree_fit<K>::fit(std::size_t cell, const std::vector<Arrival>& all, std::vector<std::size_t>& spare) {
-  const std::vector<Arrival> steps = in_cell(all, tree_.nodes[cell].cell);
-  const auto taken = [&](std::vector<std::size_t>::iterator o) {
-    tree_.nodes[*o] = Bsp_node{};
-    log_.free.push_back(*o);
-    spare.erase(o);
-  };
+void Subtree_fit<K>::fit_cells(std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells,
+                               std::vector<std::size_t>& spare) {
+  // Cells that an old subtree makes whole take it first: fitted below a
+  // matching top, another cell would use it up.
+  std::vector<Fitting> rest;
+  for (auto& [cell, all] : cells) {
+    std::vector<Arrival> steps = in_cell(all, tree_.nodes[cell].cell);
+    if (!take_whole(cell, steps, spare)) rest.push_back({cell, std::move(steps), std::nullopt, 0, std::nullopt});
+  }
+  // The others get the cuts of their first segment; an old subtree with
+  // the same cut on top goes to the cell whose arrivals it shares most,
+  // over all the cells here (the first cell to ask may lie beside it).
+  for (Fitting& f : rest) first_cuts(f, spare);
+  std::vector<std::tuple<std::size_t, std::size_t, std::size_t>> pairs;  // (score, cell's place, spare's place)
+  for (std::size_t i = 0; i < rest.size(); ++i) {
+    if (!rest[i].rank) continue;
+    const Bsp_node& made = tree_.nodes[rest[i].cell];
+    const std::vector<Arrival_key> want = arrival_keys(rest[i].steps);
+    for (std::size_t k = 0; k < spare.size(); ++k)
+      if (same_cut(tree_.nodes[spare[k]], made))
+        pairs.emplace_back(4 * shared(want, arrival_keys(log_.at[spare[k]])) +
+                               sides_shared(tree_.nodes[spare[k]].cell, made.cell),
+                           i, k);
+  }
+  std::stable_sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return std::get<0>(a) > std::get<0>(b); });
+  std::vector<bool> used(spare.size());
+  for (const auto& [score, i, k] : pairs)
+    if (!rest[i].old && !used[k]) {
+      rest[i].old = spare[k];
+      used[k] = true;
+    }
+  std::vector<std::size_t> left;
+  for (std::size_t k = 0; k < spare.size(); ++k)
+    if (!used[k]) left.push_back(spare[k]);
+  spare = std::move(left);
+  for (const Fitting& f : rest) fit(f);
+}
+
+template <class K>
+bool Subtree_fit<K>::take_whole(std::size_t cell, const std::vector<Arrival>& steps, std::vector<std::size_t>& spare) {
   // The arrivals of an old subtree that holds no failing node: it is the
   // subtree they make.
-  const auto same = std::find_if(spare.begin(), spare.end(),
-                                 [&](std::size_t o) { return !dirty_.count(o) && log_.at[o] == steps; });
-  if (same != spare.end()) {
-    move_node(*same, cell);
-    refresh_cells(cell);
-    return taken(same);
-  }
+  auto o = std::find_if(spare.begin(), spare.end(), [&](std::size_t o) { return !dirty_.count(o) && log_.at[o] == steps; });
   // Or one whose cell differs only in walls that moved to the same abscissa
   // without any of its signs there changing: it is renamed.
-  if (const auto moved = renamable(cell, steps, spare); moved != spare.end()) {
-    rename_walls(*moved, tree_.nodes[cell].cell);
-    move_node(*moved, cell);
-    refresh_cells(cell);
-    return taken(moved);
+  if (o == spare.end()) {
+    o = renamable(cell, steps, spare);
+    if (o == spare.end()) return false;
+    rename_walls(*o, tree_.nodes[cell].cell);
   }
-  // Otherwise the cuts of the first segment that cuts the cell; when an old
-  // subtree has the same cut on top, its cells are fitted to the new ones
-  // in turn (the cell's new wall changes only the arrivals that meet it).
-  const auto first = std::find_if(steps.begin(), steps.end(),
+  move_node(*o, cell);
+  refresh_cells(cell);
+  tree_.nodes[*o] = Bsp_node{};
+  log_.free.push_back(*o);
+  spare.erase(o);
+  return true;
+}
+
+template <class K>
+void Subtree_fit<K>::first_cuts(Fitting& f, const std::vector<std::size_t>& spare) {
+  const auto first = std::find_if(f.steps.begin(), f.steps.end(),
                                   [](const Arrival& a) { return a.kind != Arrival::Kind::crossings; });
-  if (first != steps.end()) {
-    const std::size_t r = scene_.rank[first->segment];
-    const auto [from, to] = rank_block(steps, scene_.rank, r);
-    // A crossing walk that reaches a cell is followed there by its segment's
-    // intersection or edge arrivals, in its block: no earlier block can hold
-    // only walks. Anything else is a log out of step with the tree.
-    if (from != 0) throw Bsp_contradiction("cylindrical BSP: a cell's arrivals precede the block of its first cut");
-    builder_.replay(cell, std::vector<Arrival>(steps.begin() + static_cast<std::ptrdiff_t>(from),
-                                               steps.begin() + static_cast<std::ptrdiff_t>(to)));
-    const Bsp_node& made = tree_.nodes[cell];
-    const auto old = std::find_if(spare.begin(), spare.end(), [&](std::size_t o) {
-      const Bsp_node& n = tree_.nodes[o];
-      return n.kind == made.kind && (made.kind == Cut_kind::edge ? n.segment == made.segment : n.point == made.point);
-    });
-    if (old != spare.end()) {
-      std::vector<std::size_t> below = set_aside(*old, r);
-      taken(old);
-      for (auto& [c, got] : cells_below(cell, r, steps, to)) fit(c, got, below);
-      for (const std::size_t o : below) discard(o, true);
-      return;
-    }
-    discard(cell, false);
+  if (first == f.steps.end()) return;
+  const std::size_t r = scene_.rank[first->segment];
+  const auto [from, to] = rank_block(f.steps, scene_.rank, r);
+  // A crossing walk that reaches a cell is followed there by its segment's
+  // intersection or edge arrivals, in its block: no earlier block can hold
+  // only walks. Anything else is a log out of step with the tree.
+  if (from != 0) throw Bsp_contradiction("cylindrical BSP: a cell's arrivals precede the block of its first cut");
+  // With no old subtree topped by a cut of that segment, none can match:
+  // the cell is replayed whole, its first cuts made once.
+  if (std::none_of(spare.begin(), spare.end(), [&](std::size_t o) { return cut_rank(tree_.nodes[o], scene_.rank) == r; }))
+    return;
+  f.rank = r;
+  f.to = to;
+  builder_.replay(f.cell, std::vector<Arrival>(f.steps.begin(), f.steps.begin() + static_cast<std::ptrdiff_t>(to)));
+}
+
+template <class K>
+void Subtree_fit<K>::fit(const Fitting& f) {
+  if (f.old) {
+    // The old subtree's cuts of that rank set aside in turn, and the cells
+    // below the new ones fitted to what lay below them.
+    std::vector<std::size_t> below = set_aside(*f.old, *f.rank);
+    tree_.nodes[*f.old] = Bsp_node{};
+    log_.free.push_back(*f.old);
+    fit_cells(cells_below(f.cell, *f.rank, f.steps, f.to), below);
+    for (const std::size_t o : below) discard(o, true);
+    return;
   }
-  builder_.replay(cell, steps);
+  if (f.rank) discard(f.cell, false);
+  builder_.replay(f.cell, f.steps);
 }
 
 namespace {

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -50,8 +51,9 @@ public:
   // steps in `arrivals` (v's log before); then the later segments' steps
   // decided down to the cells those cuts make; a cell whose arrivals are
   // those of an old subtree of `spare` not dirty takes that subtree whole,
-  // one whose first cut is an old subtree's top is fitted to it cell by
-  // cell, and the others are replayed. The spares left are discarded.
+  // one whose first cut is an old subtree's top (of those left, the one
+  // sharing most arrivals) is fitted to it cell by cell, and the others
+  // are replayed. The spares left are discarded.
   void remake(std::size_t v, std::size_t r, const std::vector<Arrival>& arrivals, std::vector<std::size_t> spare);
   // The subtree of v forgotten and its slots freed (v's too when `with_root`).
   void discard(std::size_t v, bool with_root);
@@ -63,7 +65,27 @@ private:
   std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells_below(std::size_t v, std::size_t r,
                                                                         const std::vector<Arrival>& arrivals,
                                                                         std::size_t to);
-  void fit(std::size_t cell, const std::vector<Arrival>& steps, std::vector<std::size_t>& spare);
+  // A cell below a new cut, with its arrivals; once its first segment's
+  // cuts are made, that segment's rank and the end of its block; and the
+  // old subtree with the same cut on top that it is fitted to, if any.
+  struct Fitting {
+    std::size_t cell;
+    std::vector<Arrival> steps;
+    std::optional<std::size_t> rank;
+    std::size_t to = 0;
+    std::optional<std::size_t> old;
+  };
+  // Fits the cells made below one node to the old subtrees of `spare`,
+  // taking from it those used.
+  void fit_cells(std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells, std::vector<std::size_t>& spare);
+  // Whether an old subtree of `spare` makes the cell whole (Lemma 5, or
+  // 5' with walls renamed); if so it moves there.
+  bool take_whole(std::size_t cell, const std::vector<Arrival>& steps, std::vector<std::size_t>& spare);
+  // The cuts of the first segment that cuts the cell, when an old subtree
+  // of `spare` has a cut of that segment on top.
+  void first_cuts(Fitting& f, const std::vector<std::size_t>& spare);
+  // Below a matched top the cells fitted in turn; otherwise the cell replayed.
+  void fit(const Fitting& f);
   // The old subtree of `spare` not dirty, with the cell's floor and roof,
   // whose log is `steps` once the walls of its cell that moved are named as
   // the new ones, and that hooks.renamed accepts; or none.
