@@ -285,7 +285,14 @@ template <class K>
 void Aeg_kinetic_bsp<K>::make_endpoint(std::size_t e, std::size_t from, bool near) {
   // The leaf beside p: its floor and roof are p's neighbours.
   const std::size_t v = counting(phases_.leaves, [&] {
-    return aeg_leaf(tree_, pred_, now_, e, !near || from == 0 || inside(e, from) ? from : 0);
+    // With `near`, from `from` or the first node above it whose cell holds
+    // the endpoint inside now (an endpoint on the cell's wall lies inside
+    // the cell of that wall's cut, a few nodes up, unless it meets a cut).
+    std::size_t start = from;
+    if (near)
+      while (start != 0 && !inside(Site_point::endpoint(e), start))
+        start = static_cast<std::size_t>(tree_.nodes[start].parent);
+    return aeg_leaf(tree_, pred_, now_, e, start);
   });
   leaf_[e] = v;
   beside_[v].push_back(e);
@@ -314,8 +321,7 @@ void Aeg_kinetic_bsp<K>::remake_beside(std::size_t n, std::size_t from, bool nea
 }
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::inside(std::size_t e, std::size_t n) const {
-  const Site_point p = Site_point::endpoint(e);
+bool Aeg_kinetic_bsp<K>::inside(const Site_point& p, std::size_t n) const {
   const Cell& c = tree_.nodes[n].cell;
   const auto is = [](const Segment_sign& s, int side) { return s.rule == Segment_rule::value && s.sign == side; };
   return (!c.left || is(pred_.compare_x(p, *c.left, now_), 1)) && (!c.right || is(pred_.compare_x(p, *c.right, now_), -1)) &&

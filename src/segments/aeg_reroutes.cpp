@@ -190,6 +190,10 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       // below its frontier (a cell of a cut no earlier than the segment's).
       if (cut_rank(tree_.nodes[cell], rank) < r) return {};
       std::size_t frontier = cell;
+      // The points still asked: above the first cut of the keys' own on
+      // the path, a point inside that node's cell meets no cut (inside).
+      std::vector<Site_point> open(change.points.begin(), change.points.end());
+      bool squeezed_points = false;
       for (std::int32_t a = parent(cell); a >= 0; a = parent(static_cast<std::size_t>(a))) {
         const auto n = static_cast<std::size_t>(a);
         const Bsp_node& q = tree_.nodes[n];
@@ -197,8 +201,14 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
           frontier = n;
           continue;
         }
-        if (feature(q)) continue;
-        for (const Site_point& z : change.points)
+        if (feature(q)) {
+          if (!squeezed_points) {
+            squeezed_points = true;
+            counting(phases_.ties, [&] { std::erase_if(open, [&](const Site_point& z) { return inside(z, n); }); });
+          }
+          continue;
+        }
+        for (const Site_point& z : open)
           if (ties(q, z, false)) return {};
         if (point_cut(q) && tied(pred_.side(q.point, s, now_), false)) return {};
       }

@@ -222,19 +222,19 @@ private:
   void make_transient(std::size_t node);
   // An endpoint's, its leaf found from `from` (an ancestor of it): kept when
   // its floor and roof are the same and it is not failing now, else made.
-  // With `near`, `from` is only where it was: its leaf is found from there
-  // when it lies inside from's cell now, else from the root.
+  // With `near`, `from` is only where it was: its leaf is found from the
+  // first of `from` and its ancestors whose cell it lies inside now.
   void make_endpoint(std::size_t e, std::size_t from = 0, bool near = false);
   // The endpoints beside node n, their leaves found again from `from`
   // (an ancestor of them, n itself when it stays a leaf; with `near`, as
   // make_endpoint's).
   void remake_beside(std::size_t n, std::size_t from, bool near = false);
-  // Whether endpoint e lies inside node n's cell now: its signs against
-  // the cell's walls, floor and roof decided by their values, each the
-  // cell's side. The cell lies on one side of every cut above it, and a
-  // point inside it on the same side, so its leaf below n is the one a
-  // search from the root finds.
-  bool inside(std::size_t e, std::size_t n) const;
+  // Whether point p lies inside node n's cell now: its signs against the
+  // cell's walls, floor and roof decided by their values, each the cell's
+  // side. The cell lies on one side of every cut above it, and a point
+  // inside it strictly on the same side: an endpoint's leaf below n is the
+  // one a search from the root finds, and no cut above n meets p now.
+  bool inside(const Site_point& p, std::size_t n) const;
   void make_flip(std::size_t s);
   // The nodes whose cut the insertion of segment s made, none of them below
   // another: s's first cut in each leaf of B_{i-1} that s meets, found down
