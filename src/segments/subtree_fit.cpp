@@ -200,8 +200,7 @@ bool Subtree_fit<K>::take_whole(std::size_t cell, const std::vector<Arrival>& st
   }
   move_node(*o, cell);
   refresh_cells(cell);
-  tree_.nodes[*o] = Bsp_node{};
-  log_.free.push_back(*o);
+  release(*o);
   spare.erase(o);
   return true;
 }
@@ -232,8 +231,7 @@ void Subtree_fit<K>::fit(const Fitting& f) {
     // The old subtree's cuts of that rank set aside in turn, and the cells
     // below the new ones fitted to what lay below them.
     std::vector<std::size_t> below = set_aside(*f.old, *f.rank);
-    tree_.nodes[*f.old] = Bsp_node{};
-    log_.free.push_back(*f.old);
+    release(*f.old);
     fit_cells(cells_below(f.cell, *f.rank, f.steps, f.to), below);
     for (const std::size_t o : below) discard(o, true);
     return;
@@ -298,6 +296,12 @@ void Subtree_fit<K>::move_node(std::size_t from, std::size_t to) {
   log_.at[to] = std::move(log_.at[from]);
   log_.at[from].clear();
   hooks_.moved(from, to);
+}
+
+template <class K>
+void Subtree_fit<K>::release(std::size_t o) {
+  tree_.nodes[o] = Bsp_node{};
+  log_.free.push_back(o);
 }
 
 template <class K>

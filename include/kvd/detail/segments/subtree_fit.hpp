@@ -51,9 +51,10 @@ public:
   // steps in `arrivals` (v's log before); then the later segments' steps
   // decided down to the cells those cuts make; a cell whose arrivals are
   // those of an old subtree of `spare` not dirty takes that subtree whole,
-  // one whose first cut is an old subtree's top (of those left, the one
-  // sharing most arrivals) is fitted to it cell by cell, and the others
-  // are replayed. The spares left are discarded.
+  // one whose first cut is an old subtree's top is fitted to it cell by
+  // cell (each such old subtree going to one of those cells, the pairs
+  // sharing most arrivals first), and the others are replayed. The spares
+  // left are discarded.
   void remake(std::size_t v, std::size_t r, const std::vector<Arrival>& arrivals, std::vector<std::size_t> spare);
   // The subtree of v forgotten and its slots freed (v's too when `with_root`).
   void discard(std::size_t v, bool with_root);
@@ -96,6 +97,8 @@ private:
   // Node `from`'s cut, children and log move to slot `to`, which keeps its
   // parent and cell.
   void move_node(std::size_t from, std::size_t to);
+  // Old node o's slot, its content moved or set aside, freed.
+  void release(std::size_t o);
   // The cells below v made again from v's, down to those that stay.
   void refresh_cells(std::size_t v);
 
