@@ -462,9 +462,10 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::roots(const Entry& e) const {
 
 template <class K>
 std::set<std::size_t> Aeg_kinetic_bsp<K>::changing(const std::vector<Entry>& entries,
-                                                   const std::vector<std::size_t>& roots) const {
+                                                   const std::vector<std::size_t>& roots,
+                                                   std::vector<std::size_t> at) const {
   std::vector<Site_point> points;
-  std::vector<std::size_t> segments, turning, at;
+  std::vector<std::size_t> segments, turning;
   for (const Entry& e : entries) {
     const std::size_t from = subjects(e, points, segments);
     if (e.kind == Aeg_certificate_kind::flip) turning.push_back(e.index);
@@ -580,9 +581,12 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
                       [&](std::size_t o, const Cell& now) { return walls_renamed(o, now); }});
   // Every subtree is made again before any certificate: an endpoint may move
   // from one frontier node to another.
-  for (const auto& [v, frontier, whole] : roots) {
+  for (const auto& [v, frontier, several] : roots) {
     from = v;
-    if (frontier || whole) near.insert(v);
+    if (frontier) near.insert(v);
+    // Its log changed in several blocks: its old content, set aside with
+    // that log, must not be taken whole.
+    if (several) dirty.insert(v);
     const std::string text = tree_.text(v);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
@@ -590,7 +594,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
     std::optional<std::size_t> r = frontier;
     const std::int32_t up = tree_.nodes[v].parent;
     if (const std::size_t own = cut_rank(tree_.nodes[v], scene_.rank);
-        !r && !whole && own < scene_.rank.size() &&
+        !r && own < scene_.rank.size() &&
         (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < own))
       r = own;
     if (r) {
@@ -613,7 +617,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
     is.insert(is.end(), y.begin(), y.end());
     changed = changed || tree_.text(v) != text;
     ++b.replays;
-    b.frontier_replays += frontier.has_value() || whole;
+    b.frontier_replays += frontier.has_value();
   }
   for (const Replay_root& root : roots) {
     const std::size_t v = root.node;
@@ -747,7 +751,8 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
   if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
   } else if (!entries.empty()) {
-    std::vector<Replay_root> top = reroutes(entries);
+    std::vector<std::size_t> asked;
+    std::vector<Replay_root> top = reroutes(entries, asked);
     if (top.empty()) {
       // The subtrees the failing certificates name, none below another, their
       // ties read at the batch's instant (signs that vanish there cost most:
@@ -764,7 +769,7 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
     }
     std::vector<std::size_t> nodes;
     for (const Replay_root& r : top) nodes.push_back(r.node);
-    std::set<std::size_t> dirty = changing(entries, nodes);
+    std::set<std::size_t> dirty = changing(entries, nodes, std::move(asked));
     for (const std::size_t v : failing_transient) transient_.erase(v);
     b.changed = replay(top, std::move(dirty), b);
   }

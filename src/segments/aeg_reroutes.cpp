@@ -74,7 +74,8 @@ struct Change {
 }  // namespace
 
 template <class K>
-std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& entries) {
+std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& entries,
+                                                      std::vector<std::size_t>& asked) {
   if (entries.empty()) return {};
   const std::vector<std::size_t>& rank = scene_.rank;
   // The signs of the failing certificates that changed, against those they
@@ -271,9 +272,10 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   }
   // Otherwise every segment's steps are decided again from its tops above
   // the frontier of the earliest segment, down to it, and the frontier
-  // nodes above the changes are replayed whole (proofs/segment-local-update.md,
-  // "Several segments at one instant"). The guards above asked each segment's
-  // signs down to its own frontier, which lies at or below that one.
+  // nodes above the changes are made again, that segment's cuts first
+  // (proofs/segment-local-update.md, "Several segments at one instant").
+  // The guards above asked each segment's signs down to its own frontier,
+  // which lies at or below that one.
   const std::size_t first = changes.begin()->first;
   const auto frontier_of = [&](std::size_t n) {  // the topmost node of rank `first` or later on n's path
     std::size_t f = n;
@@ -307,6 +309,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
         if (std::any_of(keys.begin(), keys.end(),
                         [&](const Key& k) { return change.keys.count(normal(k)) > 0 || vanishes(k); })) {
           frontiers.insert(frontier_of(n));
+          asked.push_back(n);
           continue;
         }
       }
@@ -320,7 +323,7 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   }
   for (const std::size_t n : frontiers) {
     drop_unwalked_crossings(log_.at[n]);
-    out.push_back({n, std::nullopt, true});
+    out.push_back({n, first, true});
   }
   return out;
 }
@@ -404,7 +407,8 @@ bool Aeg_kinetic_bsp<K>::squeezed(const std::vector<std::size_t>& ends, std::siz
   return true;
 }
 
-template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::reroutes(const std::vector<Entry>&);
+template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::reroutes(const std::vector<Entry>&,
+                                                                         std::vector<std::size_t>&);
 template bool Aeg_kinetic_bsp<Exact_kernel>::squeezed(const std::vector<std::size_t>&, std::size_t,
                                                       const std::set<Key>&) const;
 template bool Aeg_kinetic_bsp<Exact_kernel>::abscissa_clear(std::size_t, const std::set<Key>&) const;

@@ -152,11 +152,12 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     }
   // With one segment's steps changed, a frontier node is remade with that
   // segment's cuts first and the old subtrees kept where the later steps
-  // did not change; with several, it is replayed whole.
+  // did not change; with several, the earliest one's cuts first, and only
+  // what lies below its old content is kept (Replay_root::several).
   std::vector<Replay_root> roots;
   for (const std::size_t n : replayed) {
     if (several) drop_unwalked_crossings(log_.at[n]);
-    roots.push_back(several ? Replay_root{n, std::nullopt, true} : Replay_root{n, r});
+    roots.push_back({n, r, several});
   }
   return roots;
 }

@@ -318,9 +318,11 @@ private:
   // The nodes where a sign may change: the failing transient nodes and
   // endpoints' leaves, and below the roots every cut of a point or segment
   // the failing certificates are about (for a flip, every point on its
-  // segment), with their ancestors. A replay keeps an old subtree whole
-  // only where its arrivals are the same and it holds none of them.
-  std::set<std::size_t> changing(const std::vector<Entry>& entries, const std::vector<std::size_t>& roots) const;
+  // segment), and the nodes `asked` (reroutes), with their ancestors. A
+  // replay keeps an old subtree whole only where its arrivals are the same
+  // and it holds none of them.
+  std::set<std::size_t> changing(const std::vector<Entry>& entries, const std::vector<std::size_t>& roots,
+                                 std::vector<std::size_t> asked) const;
   // Whether `at` meets node n's cut at now (a sign there is zero at now and
   // decided just after, or by the perturbation). With `identities` false, a
   // sign zero by identity (`at` a crossing on the cut's segment, for good)
@@ -353,9 +355,11 @@ private:
   // "Rerouting on the paper's set"); else nothing is done and none returned.
   // When one segment's nodes lie at or above another's, every segment's
   // steps are decided again down to the frontier of the earliest, and the
-  // frontier nodes there are returned to be replayed whole ("Several
-  // segments at one instant").
-  std::vector<Replay_root> reroutes(const std::vector<Entry>& entries);
+  // frontier nodes there are returned to be made again with the earliest
+  // segment's cuts first, marked `several` ("Several segments at one
+  // instant"); the nodes below them where a later segment's steps ask a
+  // sign that changes or vanishes now are added to `asked`.
+  std::vector<Replay_root> reroutes(const std::vector<Entry>& entries, std::vector<std::size_t>& asked);
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.
   bool crossing(std::size_t i, std::size_t j) const;

@@ -15,21 +15,24 @@
 namespace kvd::segments {
 
 // A subtree to make again: its root, and for a frontier node the rank of
-// the segment whose steps changed above it (its cuts come first there).
-// `whole`: a frontier node whose log changed in the blocks of several
-// segments, made again by a replay of its log (Lemma 2) with nothing kept:
-// the remake tells an old subtree by its log, and would take one whose log
-// changed in a later block for unchanged. (The kept run replays every root
-// without a rank whole; the run on the paper's set otherwise remakes a root
-// that is its segment's first cut on its path.)
+// the segment whose cuts come first there (its steps changed above it, or
+// it is the earliest of several segments whose steps did). `several`: the
+// node's log changed in the blocks of several segments, so its old content
+// cannot be told by its log (the remake sets it aside with the log less the
+// first segment's block, which would pass for unchanged): it counts as
+// holding a failing node, and only the old subtrees below it whose own logs
+// match are kept (proofs/segment-local-update.md, "Several segments at one
+// instant"). A root without a rank is replayed whole (the kept run), or
+// remade when it is its segment's first cut on its path (the run on the
+// paper's set).
 struct Replay_root {
   std::size_t node;
   std::optional<std::size_t> rank;
-  bool whole = false;
+  bool several = false;
 };
 
-// Before the whole replay of a frontier node below which several segments'
-// steps were decided again: the log's crossings of a segment whose crossing
+// Before a frontier node below which several segments' steps were decided
+// again is made again: the log's crossings of a segment whose crossing
 // walk does not reach the node go. Such a crossing, with a segment of the
 // frontier's rank or later, is not found by the walks above the frontier
 // and is located as logged; it lands where its walk does not reach only if
