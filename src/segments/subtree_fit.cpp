@@ -183,7 +183,7 @@ void Subtree_fit<K>::fit_cells(std::vector<std::pair<std::size_t, std::vector<Ar
   for (std::size_t k = 0; k < spare.size(); ++k)
     if (!used[k]) left.push_back(spare[k]);
   spare = std::move(left);
-  for (const Fitting& f : rest) fit(f);
+  for (const Fitting& f : rest) fit(f, spare);
 }
 
 template <class K>
@@ -226,18 +226,24 @@ void Subtree_fit<K>::first_cuts(Fitting& f, const std::vector<std::size_t>& spar
 }
 
 template <class K>
-void Subtree_fit<K>::fit(const Fitting& f) {
-  if (f.old) {
-    // The old subtree's cuts of that rank set aside in turn, and the cells
-    // below the new ones fitted to what lay below them.
-    std::vector<std::size_t> below = set_aside(*f.old, *f.rank);
-    release(*f.old);
-    fit_cells(cells_below(f.cell, *f.rank, f.steps, f.to), below);
-    for (const std::size_t o : below) discard(o, true);
+void Subtree_fit<K>::fit(const Fitting& f, std::vector<std::size_t>& left) {
+  if (!f.rank) {
+    builder_.replay(f.cell, f.steps);
     return;
   }
-  if (f.rank) discard(f.cell, false);
-  builder_.replay(f.cell, f.steps);
+  // The cell's first cuts are made. With the old subtree of the same top
+  // taken by a cell beside it, the cells below them are fitted to what is
+  // left over here, not replayed: the cuts are the replay's own.
+  if (!f.old) {
+    fit_cells(cells_below(f.cell, *f.rank, f.steps, f.to), left);
+    return;
+  }
+  // The old subtree's cuts of that rank set aside in turn, and the cells
+  // below the new ones fitted to what lay below them.
+  std::vector<std::size_t> below = set_aside(*f.old, *f.rank);
+  release(*f.old);
+  fit_cells(cells_below(f.cell, *f.rank, f.steps, f.to), below);
+  for (const std::size_t o : below) discard(o, true);
 }
 
 namespace {

@@ -85,8 +85,10 @@ private:
   // The cuts of the first segment that cuts the cell, when an old subtree
   // of `spare` has a cut of that segment on top.
   void first_cuts(Fitting& f, const std::vector<std::size_t>& spare);
-  // Below a matched top the cells fitted in turn; otherwise the cell replayed.
-  void fit(const Fitting& f);
+  // Below a matched top the cells fitted in turn to the old subtree's below
+  // its cuts of that rank; below first cuts with no old top left for them,
+  // to the old subtrees `left` over here; a cell without first cuts replayed.
+  void fit(const Fitting& f, std::vector<std::size_t>& left);
   // The old subtree of `spare` not dirty, with the cell's floor and roof,
   // whose log is `steps` once the walls of its cell that moved are named as
   // the new ones, and that hooks.renamed accepts; or none.
