@@ -133,17 +133,28 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
   // Decided again from each start: the certificates there, above the
   // frontier, and above the start for crossings found anew, are recorded.
   // Above the frontier the cut stays; a key the segment's steps decided
-  // there before and do not now goes, unless another step decides it (the
-  // keys of the whole log, read once, and only when some key may go).
+  // there before and do not now goes, unless another step decides it. A
+  // step decides a key at a node only through a point it carries (its
+  // located point, or an end of its walk: decided_keys), so only the steps
+  // carrying a point of a key that may go are read, not the whole log
+  // (some 20,000 arrivals near the root of 12,800 segments).
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   const Reroute_above above = [&](std::size_t n, const std::vector<Arrival>& was, const std::vector<Arrival>& now) {
     const std::vector<Key> new_keys = keys_of(node(n), now);
-    std::optional<std::vector<Key>> all;
-    for (const Key& k : keys_of(node(n), was)) {
-      if (has(new_keys, k)) continue;
-      if (!all) all = keys_of(node(n), log_.at[n]);
-      if (!has(*all, k)) unrecord(k, static_cast<std::int32_t>(n));
-    }
+    std::vector<Key> may_go;
+    for (const Key& k : keys_of(node(n), was))
+      if (!has(new_keys, k)) may_go.push_back(k);
+    if (may_go.empty()) return;
+    std::vector<Site_point> points;
+    for (const Key& k : may_go) points.insert(points.end(), {k.p, k.q});
+    std::sort(points.begin(), points.end());
+    const auto carried = [&](const Site_point& x) { return std::binary_search(points.begin(), points.end(), x); };
+    std::vector<Arrival> carrying;
+    for (const Arrival& a : log_.at[n])
+      if (carried(a.a) || carried(a.b)) carrying.push_back(a);
+    const std::vector<Key> others = keys_of(node(n), carrying);
+    for (const Key& k : may_go)
+      if (!has(others, k)) unrecord(k, static_cast<std::int32_t>(n));
   };
   for (const auto& [rs, from] : starts)
     for (const std::size_t v : from) {
