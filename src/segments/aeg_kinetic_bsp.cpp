@@ -543,7 +543,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   // endpoints are found again from.
   std::vector<std::pair<std::size_t, std::size_t>> homeless, recelled;
   std::size_t from = 0;
-  // The frontier roots and those replayed whole: an endpoint below one may
+  // The frontier roots: an endpoint below one may
   // have moved to another's, so it is looked for there only while inside.
   std::set<std::size_t> near;
   const auto unmake = [&](std::size_t n) {

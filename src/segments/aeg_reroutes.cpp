@@ -306,11 +306,12 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
       if (cut_rank(q, rank) >= first) {
         keys.clear();
         for (std::size_t i = from; i < to; ++i) decided_keys(q, log[i], keys);
+        // Every such node is asked, not only the topmost on a path: the
+        // remake keeps old subtrees below one.
         if (std::any_of(keys.begin(), keys.end(),
                         [&](const Key& k) { return change.keys.count(normal(k)) > 0 || vanishes(k); })) {
           frontiers.insert(frontier_of(n));
           asked.push_back(n);
-          continue;
         }
       }
       for (const std::int32_t ch : q.child) stack.push_back(static_cast<std::size_t>(ch));

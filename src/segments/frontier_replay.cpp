@@ -145,13 +145,17 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     for (const Key& k : keys_of(node(n), was))
       if (!has(new_keys, k)) may_go.push_back(k);
     if (may_go.empty()) return;
+    // (Only an x order names a second point; only a walk has a second end.)
     std::vector<Site_point> points;
-    for (const Key& k : may_go) points.insert(points.end(), {k.p, k.q});
+    for (const Key& k : may_go) {
+      points.push_back(k.p);
+      if (k.kind == Key::Kind::x_order) points.push_back(k.q);
+    }
     std::sort(points.begin(), points.end());
     const auto carried = [&](const Site_point& x) { return std::binary_search(points.begin(), points.end(), x); };
     std::vector<Arrival> carrying;
     for (const Arrival& a : log_.at[n])
-      if (carried(a.a) || carried(a.b)) carrying.push_back(a);
+      if (carried(a.a) || (!locates(a) && carried(a.b))) carrying.push_back(a);
     const std::vector<Key> others = keys_of(node(n), carrying);
     for (const Key& k : may_go)
       if (!has(others, k)) unrecord(k, static_cast<std::int32_t>(n));

@@ -231,9 +231,10 @@ void Subtree_fit<K>::fit(const Fitting& f, std::vector<std::size_t>& left) {
     builder_.replay(f.cell, f.steps);
     return;
   }
-  // The cell's first cuts are made. With the old subtree of the same top
-  // taken by a cell beside it, the cells below them are fitted to what is
-  // left over here, not replayed: the cuts are the replay's own.
+  // The cell's first cuts are made. With no old subtree of the same top
+  // left for it (taken by a cell beside it, or the spare of that rank has
+  // another cut of the segment on top), the cells below them are fitted to
+  // what is left over here, not replayed: the cuts are the replay's own.
   if (!f.old) {
     fit_cells(cells_below(f.cell, *f.rank, f.steps, f.to), left);
     return;

@@ -24,7 +24,8 @@
 // other segments below u, each node one segment's (events of several
 // segments at one instant), have their segments' steps decided again from
 // them too, down to the frontier of the earliest segment, whose nodes are
-// then replayed. Otherwise it replays u's subtree. A flip is
+// then made again with that segment's cuts first (Replay_root::several).
+// Otherwise it replays u's subtree. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
 // cells of the segment's own cuts, and the update is the paper's (section

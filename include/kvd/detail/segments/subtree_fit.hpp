@@ -37,7 +37,8 @@ struct Subtree_fit_hooks {
 template <class K>
 class Subtree_fit {
 public:
-  // `dirty`: nodes holding a change (a failing certificate below them): a
+  // `dirty`: nodes holding a change (a failing certificate below them, or a
+  // log changed in several segments' blocks, Replay_root::several): a
   // subtree of one is never taken whole.
   Subtree_fit(Cylindrical_bsp& tree, Build_log& log, const Segment_scene& scene, Bsp_builder<K>& builder,
               std::set<std::size_t>& dirty, Subtree_fit_hooks hooks);
@@ -53,8 +54,10 @@ public:
   // those of an old subtree of `spare` not dirty takes that subtree whole,
   // one whose first cut is an old subtree's top is fitted to it cell by
   // cell (each such old subtree going to one of those cells, the pairs
-  // sharing most arrivals first), and the others are replayed. The spares
-  // left are discarded.
+  // sharing most arrivals first), one whose first cuts were made for an old
+  // subtree that went elsewhere has the cells below them fitted to the
+  // spares left, and the others are replayed. The spares left are
+  // discarded.
   void remake(std::size_t v, std::size_t r, const std::vector<Arrival>& arrivals, std::vector<std::size_t> spare);
   // The subtree of v forgotten and its slots freed (v's too when `with_root`).
   void discard(std::size_t v, bool with_root);
