@@ -543,8 +543,8 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   // endpoints are found again from.
   std::vector<std::pair<std::size_t, std::size_t>> homeless, recelled;
   std::size_t from = 0;
-  // The frontier roots: an endpoint below one may
-  // have moved to another's, so it is looked for there only while inside.
+  // The frontier roots: an endpoint below one may have moved to another's,
+  // so it is looked for there only while inside.
   std::set<std::size_t> near;
   const auto unmake = [&](std::size_t n) {
     if (const auto it = transient_.find(n); it != transient_.end()) {
