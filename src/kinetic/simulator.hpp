@@ -328,6 +328,7 @@ private:
   }
 
   typename Reduced_upkeep<K>::Work put_in_force(const std::set<Certificate_key>& failed) {
+    roots_.bound(in_force_.size());
     const auto fails = [&](const auto& cert) { return roots_.fails(k_, cert, now_); };
     typename Reduced_upkeep<K>::Work work;
     std::vector<typename In_force<K>::Offer> offers;

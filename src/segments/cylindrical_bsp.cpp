@@ -116,7 +116,9 @@ std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& nod
     const std::size_t n = log->free.back();
     log->free.pop_back();
     bsp.nodes[n] = node;
-    log->at[n].clear();
+    // Released, not cleared: a slot that held a big log near the root and
+    // comes back as a leaf would keep its capacity for the rest of the run.
+    log->at[n] = std::vector<Arrival>();
     return n;
   }
   bsp.nodes.push_back(node);

@@ -120,6 +120,7 @@ std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::adva
 template <class K>
 void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certificate& c) {
   c.version = ++versions_;
+  roots_.bound(certs_.size());
   const std::optional<Time> first = roots_.fails(k_, c, now_);
   // A failure after the span's end is no event.
   if (first && !(bounded_ && k_.compare(*first, end_) > 0)) queue_.push({*first, key, c.version});
@@ -192,7 +193,7 @@ template <class K>
 void Kinetic_segment_bsp<K>::forget(std::size_t node) {
   if (node >= node_keys_.size()) return;
   for (const auto& key : node_keys_[node]) drop(key, static_cast<std::int32_t>(node));
-  node_keys_[node].clear();
+  node_keys_[node] = std::vector<Segment_certificate_key>();  // released: the slot may come back small
 }
 
 template <class K>
@@ -294,6 +295,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   for (const auto& key : b.failing) certs_.erase(key);
   b.changed = guarded([&] { b.changed = update(failing, b); }) || b.changed;
   next_event_time();  // up to the next queue minimum: stale entries off the heap
+  queue_.trim(certs_.size(), [this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;

@@ -1,15 +1,22 @@
 // The first sign-changing root after the current instant of each
 // polynomial a run meets, kept while it still lies ahead: a certificate
 // that stays in force, or comes back with the same polynomial, costs no new
-// root isolation.
+// root isolation. The polynomials asked for are kept in two generations:
+// when the newer holds as many as the owner has certificates in force (at
+// least 2^16 by default), the older is dropped and the newer becomes the older, and a
+// polynomial found in the older moves to the newer. So the cache holds at
+// most about twice the certificates in force, not every polynomial of the
+// run (which grew without end on long runs).
 #pragma once
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "kvd/kernel/mpfr_number.hpp"
@@ -42,10 +49,21 @@ class Root_cache {
   using Time = typename K::Time;
 
 public:
+  // `least`: the generation's size with fewer certificates in force.
+  explicit Root_cache(std::size_t least = std::size_t{1} << 16) : least_(least), generation_(least) {}
+
+  // The owner's certificates in force, which sets a generation's size.
+  void bound(std::size_t in_force) { generation_ = std::max(in_force, least_); }
+  std::size_t size() const { return newer_.size() + older_.size(); }
+
   const std::optional<Time>& next_root(const K& k, const typename K::Poly& q, const Time& now) {
-    auto it = roots_.find(q.coefficients());
-    if (it == roots_.end() || (it->second && k.compare(*it->second, now) <= 0))
-      it = roots_.insert_or_assign(q.coefficients(), k.next_root(q, now)).first;
+    auto it = newer_.find(q.coefficients());
+    if (it == newer_.end()) {
+      if (newer_.size() >= generation_) older_ = std::exchange(newer_, {});
+      if (auto kept = older_.extract(q.coefficients())) it = newer_.insert(std::move(kept)).position;
+    }
+    if (it == newer_.end() || (it->second && k.compare(*it->second, now) <= 0))
+      it = newer_.insert_or_assign(q.coefficients(), k.next_root(q, now)).first;
     return it->second;
   }
 
@@ -65,7 +83,9 @@ public:
   }
 
 private:
-  std::unordered_map<std::vector<typename K::FT>, std::optional<Time>, Coefficients_hash> roots_;
+  using Roots = std::unordered_map<std::vector<typename K::FT>, std::optional<Time>, Coefficients_hash>;
+  Roots newer_, older_;
+  std::size_t least_, generation_;
 };
 
 }  // namespace kvd::kinetic

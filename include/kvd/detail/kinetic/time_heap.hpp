@@ -1,10 +1,12 @@
 // A min-heap of queue entries on their failure time (a `time` member),
 // compared by the kernel: exactly in the exact kernel. Entries go stale
 // instead of being removed (their certificate made again or gone); the
-// caller says which are, and they are dropped when they reach the top.
+// caller says which are, and they are dropped when they reach the top, or
+// all at once when they could be half the heap (`trim`).
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -17,6 +19,7 @@ public:
   explicit Time_heap(const K& k) : k_(&k) {}
 
   bool empty() const { return entries_.empty(); }
+  std::size_t size() const { return entries_.size(); }
   const Entry& top() const { return entries_.front(); }
   void clear() { entries_.clear(); }
   void push(const Entry& e) {
@@ -33,6 +36,17 @@ public:
     while (!empty() && stale(top())) pop();
     if (empty()) return std::nullopt;
     return top().time;
+  }
+
+  // Drops every stale entry once the heap holds more than twice the live
+  // certificates (at least 2^10): an entry failing far ahead would stay
+  // otherwise, and the heap would grow with the run. After a trim at most
+  // `live` entries are left, so trims cost a constant per entry pushed.
+  template <class Stale>
+  void trim(std::size_t live, Stale stale) {
+    if (entries_.size() <= 2 * std::max(live, std::size_t{1} << 10)) return;
+    std::erase_if(entries_, stale);
+    std::make_heap(entries_.begin(), entries_.end(), later());
   }
 
 private:
