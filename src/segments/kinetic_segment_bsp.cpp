@@ -120,10 +120,8 @@ std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::adva
 template <class K>
 void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certificate& c) {
   c.version = ++versions_;
-  // Not through a root cache: a certificate here is one sign, whose
-  // polynomial comes back only once its root has passed, so a cache missed
-  // nearly always and cost a tenth of the run and a fifth of its memory.
-  const std::optional<Time> first = kinetic::earliest_root(k_, c.polys, [&](const P& q) { return k_.next_root(q, now_); });
+  roots_.bound(certs_.size());
+  const std::optional<Time> first = roots_.fails(k_, c, now_);
   // A failure after the span's end is no event.
   if (first && !(bounded_ && k_.compare(*first, end_) > 0)) queue_.push({*first, key, c.version});
 }

@@ -244,6 +244,7 @@ private:
   std::size_t indexed_ = 0;  // keys added to by_segment_ since it was last made
   kinetic::Time_heap<K, Entry> queue_{k_};
   std::uint64_t versions_ = 0;
+  kinetic::Root_cache<K> roots_;
   std::vector<std::string> failures_;
   std::size_t validations_ = 0;
   kinetic::Recovery recovery_;

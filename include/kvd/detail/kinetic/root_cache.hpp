@@ -44,17 +44,6 @@ struct Coefficients_hash {
   }
 };
 
-// The earliest of the polynomials' next roots, each given by root(q).
-template <class K, class Polys, class Root>
-std::optional<typename K::Time> earliest_root(const K& k, const Polys& polys, Root root) {
-  std::optional<typename K::Time> first;
-  for (const auto& q : polys) {
-    const auto& r = root(q);
-    if (r && (!first || k.compare(*r, *first) < 0)) first = r;
-  }
-  return first;
-}
-
 template <class K>
 class Root_cache {
   using Time = typename K::Time;
@@ -80,7 +69,12 @@ public:
 
   // The earliest of the polynomials' next roots after now.
   std::optional<Time> first_root(const K& k, const std::vector<typename K::Poly>& polys, const Time& now) {
-    return earliest_root(k, polys, [&](const typename K::Poly& q) -> const std::optional<Time>& { return next_root(k, q, now); });
+    std::optional<Time> first;
+    for (const auto& q : polys) {
+      const auto& r = next_root(k, q, now);
+      if (r && (!first || k.compare(*r, *first) < 0)) first = r;
+    }
+    return first;
   }
   // The earliest of the certificate's polynomials' next roots after now.
   template <class Certificate>
