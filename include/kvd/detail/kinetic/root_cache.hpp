@@ -1,12 +1,12 @@
 // The first sign-changing root after the current instant of each
 // polynomial a run meets, kept while it still lies ahead: a certificate
 // that stays in force, or comes back with the same polynomial, costs no new
-// root isolation. The polynomials asked for are kept in two generations:
-// when the newer holds as many as the owner has certificates in force (at
-// least 2^16 by default), the older is dropped and the newer becomes the older, and a
-// polynomial found in the older moves to the newer. So the cache holds at
-// most about twice the certificates in force, not every polynomial of the
-// run (which grew without end on long runs).
+// root isolation. In the exact kernel only polynomials of degree 3 and
+// more are kept. They are kept in two generations: when the newer holds as many as the owner has certificates
+// in force (at least 2^16 by default), the older is dropped and the newer
+// becomes the older, and a polynomial found in the older moves to the
+// newer. So the cache holds at most about twice the certificates in force,
+// not every polynomial of the run (which grew without end on long runs).
 #pragma once
 
 #include <gmpxx.h>
@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -57,6 +58,11 @@ public:
   std::size_t size() const { return newer_.size() + older_.size(); }
 
   const std::optional<Time>& next_root(const K& k, const typename K::Poly& q, const Time& now) {
+    // The exact kernel has closed forms for degrees 1 and 2
+    // (src/kernel/exact_kernel.cpp), cheaper than the lookup and the copy of
+    // the coefficients an entry costs; the floating-point ones bisect.
+    if constexpr (std::is_same_v<typename K::FT, mpq_class>)
+      if (q.degree() < 3) return uncached_ = k.next_root(q, now);
     auto it = newer_.find(q.coefficients());
     if (it == newer_.end()) {
       if (newer_.size() >= generation_) older_ = std::exchange(newer_, {});
@@ -86,6 +92,7 @@ private:
   using Roots = std::unordered_map<std::vector<typename K::FT>, std::optional<Time>, Coefficients_hash>;
   Roots newer_, older_;
   std::size_t least_, generation_;
+  std::optional<Time> uncached_;  // the last root not cached, which next_root returns
 };
 
 }  // namespace kvd::kinetic
