@@ -40,22 +40,23 @@ int segment_simulate(const Scene_args& sa, const std::string& text, const Segmen
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 
 // Advances `run` (a kinetic segment BSP of kernel k) batch by batch up to
-// o.until or the batch holding the o.max_events-th failure, appending each
-// batch to `batches`, with progress on stderr; why it stopped: "limit",
+// o.until or the batch holding the o.max_events-th failure, handing each
+// batch to take(batch) (a run's batches are not kept: their record would
+// grow with the run), with progress on stderr; why it stopped: "limit",
 // "events" or "exhausted".
-template <class Run, class K>
-std::string run_batches(Run& run, const K& k, const Segment_run_options& o,
-                        std::vector<typename Run::Batch>& batches) {
+template <class Run, class K, class Take>
+std::string run_batches(Run& run, const K& k, const Segment_run_options& o, Take take) {
   const auto progress = progress_every_few_seconds("kvd simulate");
   std::optional<typename K::Time> until;
   if (o.until) until = k.time(from_rational<typename K::FT>(*o.until));
-  std::size_t failures = 0;
+  std::size_t batches = 0, failures = 0;
   while (const auto next = run.next_event_time()) {
     if (until && k.compare(*next, *until) > 0) return "limit";
     if (failures >= o.max_events) return "events";
-    batches.push_back(run.advance());
-    failures += batches.back().failing.size();
-    progress(batches.size(), failures);
+    typename Run::Batch b = run.advance();
+    failures += b.failing.size();
+    take(std::move(b));
+    progress(++batches, failures);
   }
   return "exhausted";
 }

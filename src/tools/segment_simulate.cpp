@@ -19,15 +19,13 @@ template <class K>
 int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
   using Kinetic = segments::Kinetic_segment_bsp<K>;
   Kinetic kin(k, s, o.validate, o.update);
-  std::vector<typename Kinetic::Batch> batches;
-  std::string stopped = run_batches(kin, k, o, batches);
-  std::size_t failures = 0;
-  for (const auto& b : batches) failures += b.failing.size();
-  if (kin.stuck()) stopped = "stuck";
+  std::vector<typename Kinetic::Batch> listed;  // with --list
   std::array<std::size_t, 4> events{}, changed_by{};
-  std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
+  std::size_t batches = 0, failures = 0, changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
   std::vector<double> ms, rebuilt, signs;
-  for (const auto& b : batches) {
+  std::string stopped = run_batches(kin, k, o, [&](typename Kinetic::Batch&& b) {
+    ++batches;
+    failures += b.failing.size();
     signs.push_back(static_cast<double>(b.signs));
     frontier += b.frontier_replays;
     subtree += b.subtree_replays;
@@ -39,7 +37,9 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
     ms.push_back(b.update_seconds * 1e3);
-  }
+    if (o.list) listed.push_back(std::move(b));
+  });
+  if (kin.stuck()) stopped = "stuck";
   const segments::Bsp_counts c = kin.tree().counts();
   const double mean = ms.empty() ? 0 : std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
   const double max = ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end());
@@ -52,7 +52,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
     }
     Json list = Json::array();
     if (o.list)
-      for (const auto& b : batches) {
+      for (const auto& b : listed) {
         Json kinds = Json::object();
         for (std::size_t e = 0; e < 4; ++e)
           if (b.events[e]) kinds[segments::segment_event_names[e]] = b.events[e];
@@ -63,7 +63,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
                         {"signs", b.signs}, {"held", b.held},
                         {"update_ms", decimal(fixed(b.update_seconds * 1e3, 3))}});
       }
-    Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches.size()},
+    Json j = {{"kernel", kernel_label(k)}, {"segments", s.segments.size()}, {"batches", batches},
               {"failures", failures}, {"simultaneous_batches", simultaneous}, {"changed_batches", changed},
               {"failures_by_event", by_kind}, {"changed_batches_by_event", changing}, {"stopped", stopped},
               {"validation", o.validate ? "every" : "none"}, {"validations", kin.validations()},
@@ -80,7 +80,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
     std::cout << json_line(j) << "\n";
   } else {
     if (o.list)
-      for (const auto& b : batches) {
+      for (const auto& b : listed) {
         std::cout << "t = " << k.to_string(b.time) << " (" << approx(k.to_double(b.time)) << "): " << b.failing.size()
                   << " failing,";
         for (std::size_t e = 0; e < 4; ++e)
@@ -88,7 +88,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
         std::cout << (b.changed ? ", tree changed" : ", tree unchanged") << "\n";
       }
     std::cout << "kernel:        " << kernel_label(k) << "\nsegments:      " << s.segments.size()
-              << "\nbatches:       " << batches.size() << " (" << changed << " changed the tree, " << simultaneous
+              << "\nbatches:       " << batches << " (" << changed << " changed the tree, " << simultaneous
               << " simultaneous)\nfailures:      " << failures << " (";
     for (std::size_t e = 0; e < 4; ++e)
       std::cout << (e ? ", " : "") << events[e] << " " << segments::segment_event_names[e];

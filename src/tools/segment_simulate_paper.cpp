@@ -33,13 +33,13 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   const Exact_kernel k(o.filter);  // --no-filter: every sign in exact arithmetic
   using Run = segments::Aeg_kinetic_bsp<Exact_kernel>;
   Run run(k, s, o.validate);
-  std::vector<Run::Batch> batches;
-  const std::string stopped = run_batches(run, k, o, batches);
-  std::size_t failures = 0, changed = 0, simultaneous = 0;
+  std::vector<Run::Batch> listed;  // with --list
+  std::size_t batches = 0, failures = 0, changed = 0, simultaneous = 0;
   std::size_t replays = 0, frontier = 0, flipped = 0;
   std::array<std::size_t, 3> by_kind{};
   std::vector<double> ms, made, certified, signs;
-  for (const Run::Batch& b : batches) {
+  const std::string stopped = run_batches(run, k, o, [&](Run::Batch&& b) {
+    ++batches;
     signs.push_back(static_cast<double>(b.signs));
     failures += b.failing.size();
     changed += b.changed;
@@ -51,7 +51,8 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
     ms.push_back(b.update_seconds * 1e3);
     made.push_back(static_cast<double>(b.nodes_rebuilt));
     certified.push_back(static_cast<double>(b.certificates_made));
-  }
+    if (o.list) listed.push_back(std::move(b));
+  });
   const double mean = ms.empty() ? 0 : std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
   const double max = ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end());
   const segments::Bsp_counts c = run.tree().counts();
@@ -63,7 +64,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
     Json kinds = Json::object();
     for (std::size_t i = 0; i < 3; ++i) kinds[segments::aeg_certificate_kind_names[i]] = by_kind[i];
     Json j = {{"kernel", kernel_label(k)}, {"certificate_set", "paper"}, {"segments", s.segments.size()},
-              {"batches", batches.size()}, {"failures", failures}, {"failures_by_kind", kinds},
+              {"batches", batches}, {"failures", failures}, {"failures_by_kind", kinds},
               {"changed_batches", changed}, {"simultaneous_batches", simultaneous}, {"stopped", stopped},
               {"validation", o.validate ? "every" : "none"}, {"validations", run.validations()},
               {"validation_failures", run.validation_failures().size()},
@@ -77,7 +78,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
                                      {"max", static_cast<std::size_t>(certified_max)}}}};
     if (o.list) {
       Json list = Json::array();
-      for (const auto& b : batches) {
+      for (const auto& b : listed) {
         Json failing = Json::array();
         for (const auto& id : b.failing) failing.push_back({{"kind", kind_text(id.kind)}, {"of", segments::aeg_certificate_subject(id)}});
         list.push_back({{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))},
@@ -94,7 +95,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
     std::cout << json_line(j) << "\n";
   } else {
     if (o.list)
-      for (const auto& b : batches) {
+      for (const auto& b : listed) {
         std::cout << "t = " << k.to_string(b.time) << " (" << approx(k.to_double(b.time)) << "):";
         for (std::size_t i = 0; i < b.failing.size(); ++i)
           std::cout << (i ? ";" : "") << " " << kind_text(b.failing[i].kind) << " " << segments::aeg_certificate_subject(b.failing[i]);
@@ -102,7 +103,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
       }
     std::cout << "kernel:        " << kernel_label(k) << "\ncertificates:  paper (seed 003: transient nodes, "
               << "endpoints' neighbours, flips)\nsegments:      " << s.segments.size()
-              << "\nbatches:       " << batches.size() << " (" << changed << " changed the tree, " << simultaneous
+              << "\nbatches:       " << batches << " (" << changed << " changed the tree, " << simultaneous
               << " simultaneous)\nfailures:      " << failures << " (";
     for (std::size_t i = 0; i < 3; ++i) std::cout << (i ? ", " : "") << by_kind[i] << " " << kind_text(Aeg_certificate_kind(i));
     std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(run.now())
