@@ -1,12 +1,13 @@
 // The first sign-changing root after the current instant of each
 // polynomial a run meets, kept while it still lies ahead: a certificate
 // that stays in force, or comes back with the same polynomial, costs no new
-// root isolation. In the exact kernel only polynomials of degree 3 and
-// more are kept. They are kept in two generations: when the newer holds as many as the owner has certificates
-// in force (at least 2^16 by default), the older is dropped and the newer
-// becomes the older, and a polynomial found in the older moves to the
-// newer. So the cache holds at most about twice the certificates in force,
-// not every polynomial of the run (which grew without end on long runs).
+// root isolation. In the exact kernel only polynomials of degree 3 and more
+// are kept. They are kept in two generations: when the newer holds as many
+// as the owner has certificates in force (at least 2^16 by default), the
+// older is dropped and the newer becomes the older, and a polynomial found
+// in the older moves to the newer. So the cache holds at most about twice
+// the certificates in force, not every polynomial of the run (which grew
+// without end on long runs).
 #pragma once
 
 #include <gmpxx.h>
