@@ -168,7 +168,7 @@ void Aeg_kinetic_bsp<K>::make(Certificate& c, std::size_t index) {
   }
   ++made_;
   c.version = ++versions_;
-  roots_.bound(transient_.size() + endpoint_.size() + flip_.size());
+  roots_.bound(certificates());
   c.fails = roots_.first_root(k_, polys_, now_);
   // A failure after the span's end is no event.
   if (c.fails && bounded_ && k_.compare(*c.fails, end_) > 0) c.fails.reset();
@@ -715,7 +715,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   now_ = b.time;
   update(entries, b);
   next_event_time();  // up to the next queue minimum: stale entries off the heap
-  queue_.trim(transient_.size() + endpoint_.size() + flip_.size(), [this](const Entry& e) { return stale(e); });
+  queue_.trim(certificates(), [this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start - aside).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;

@@ -120,7 +120,7 @@ std::vector<typename Kinetic_segment_bsp<K>::Batch> Kinetic_segment_bsp<K>::adva
 template <class K>
 void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certificate& c) {
   c.version = ++versions_;
-  roots_.bound(certs_.size());
+  roots_.bound(certificates());
   const std::optional<Time> first = roots_.fails(k_, c, now_);
   // A failure after the span's end is no event.
   if (first && !(bounded_ && k_.compare(*first, end_) > 0)) queue_.push({*first, key, c.version});
@@ -295,7 +295,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   for (const auto& key : b.failing) certs_.erase(key);
   b.changed = guarded([&] { b.changed = update(failing, b); }) || b.changed;
   next_event_time();  // up to the next queue minimum: stale entries off the heap
-  queue_.trim(certs_.size(), [this](const Entry& e) { return stale(e); });
+  queue_.trim(certificates(), [this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;
