@@ -585,9 +585,6 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   for (const auto& [v, frontier, several] : roots) {
     from = v;
     if (frontier) near.insert(v);
-    // Its log changed in several blocks: its old content, set aside with
-    // that log, must not be taken whole.
-    if (several) dirty.insert(v);
     const std::string text = tree_.text(v);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
@@ -609,7 +606,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
         return a.kind == Arrival::Kind::intersection && scene_.rank[a.a.a] > *r && scene_.rank[a.a.b] > *r &&
                !crossing(a.a.a, a.a.b);
       });
-      fit.remake(v, *r, arrivals, fit.set_aside(v, *r));
+      fit.remake(v, *r, arrivals, fit.set_aside(v, *r, several));
     } else {
       fit.discard(v, false);
       builder.replay(v, arrivals);

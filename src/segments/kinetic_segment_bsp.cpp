@@ -213,12 +213,11 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
                      {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}, {}});
   for (const Replay_root& root : roots) {
     const std::size_t v = root.node;
-    if (root.several) dirty.insert(v);
     before.push_back(tree_.text(v));
     arrivals.push_back(log_.at[v]);
     const std::vector<Site_point> x = crossings_below(tree_, v);
     was.insert(was.end(), x.begin(), x.end());
-    if (root.rank) spare.push_back(fit.set_aside(v, *root.rank));
+    if (root.rank) spare.push_back(fit.set_aside(v, *root.rank, root.several));
     else {  // replayed whole
       spare.emplace_back();
       fit.discard(v, false);

@@ -20,7 +20,8 @@ Subtree_fit<K>::Subtree_fit(Cylindrical_bsp& tree, Build_log& log, const Segment
     : tree_(tree), log_(log), scene_(scene), builder_(builder), dirty_(dirty), hooks_(std::move(hooks)) {}
 
 template <class K>
-std::vector<std::size_t> Subtree_fit<K>::set_aside(std::size_t v, std::size_t r) {
+std::vector<std::size_t> Subtree_fit<K>::set_aside(std::size_t v, std::size_t r, bool several) {
+  if (several) dirty_.insert(v);
   const auto& rank = scene_.rank;
   std::vector<std::size_t> spare, stack{v};
   while (!stack.empty()) {

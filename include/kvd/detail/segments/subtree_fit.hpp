@@ -46,8 +46,11 @@ public:
   // Before a remake: the cuts of rank r below v are forgotten and their
   // slots freed, v's included; the first nodes below them of a later cut,
   // or leaves, are set aside whole (v's content moved to a free slot when v
-  // is one, and marked dirty when v is). Returns those set aside.
-  std::vector<std::size_t> set_aside(std::size_t v, std::size_t r);
+  // is one, and marked dirty when v is). With `several`
+  // (Replay_root::several), v is marked dirty first: its log changed in
+  // several blocks, so its old content must not be taken whole. Returns
+  // those set aside.
+  std::vector<std::size_t> set_aside(std::size_t v, std::size_t r, bool several = false);
   // Node v made again: the cuts of the segment of rank r first, from its
   // steps in `arrivals` (v's log before); then the later segments' steps
   // decided down to the cells those cuts make; a cell whose arrivals are
