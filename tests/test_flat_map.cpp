@@ -1,13 +1,15 @@
 // The flat hash table of the run's large tables (kvd::detail::Flat_map)
-// against std::unordered_map under the same random insertions, erasures
-// and lookups: the same elements after every step, also when every key
-// hashes alike (one run around the whole table) or to a few values (runs
-// that wrap past the end of the array and meet).
+// against std::unordered_map under the same random insertions, erasures,
+// lookups and values taken out: the same elements after every step, also
+// when every key hashes alike (one run around the whole table) or to a few
+// values (runs that wrap past the end of the array and meet).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <random>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "kvd/detail/flat_map.hpp"
@@ -26,7 +28,7 @@ void same_as_reference(std::uint64_t key_range, int steps, unsigned seed) {
   std::mt19937_64 random(seed);
   for (int step = 0; step < steps; ++step) {
     const std::uint64_t key = random() % key_range;
-    switch (random() % 4) {
+    switch (random() % 5) {
       case 0:
       case 1: {
         const auto [value, fresh] = flat.try_emplace(key);
@@ -45,6 +47,19 @@ void same_as_reference(std::uint64_t key_range, int steps, unsigned seed) {
         const auto it = reference.find(key);
         REQUIRE((value != nullptr) == (it != reference.end()));
         if (value) REQUIRE(*value == it->second);
+        if (it == reference.end()) REQUIRE_THROWS_AS(flat.at(key), std::out_of_range);
+        else REQUIRE(flat.at(key) == it->second);
+        break;
+      }
+      case 4: {  // taken out with its value
+        const std::optional<int> value = flat.take(key);
+        const auto it = reference.find(key);
+        REQUIRE(value.has_value() == (it != reference.end()));
+        if (value) {
+          REQUIRE(*value == it->second);
+          reference.erase(it);
+        }
+        REQUIRE(!flat.find(key));
         break;
       }
     }

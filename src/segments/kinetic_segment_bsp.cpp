@@ -65,8 +65,8 @@ bool Kinetic_segment_bsp<K>::guarded(F f) {
 template <class K>
 void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node,
                                     int sign) {
-  auto [it, fresh] = certs_.try_emplace(key);
-  Certificate& c = it->second;
+  auto [at, fresh] = certs_.try_emplace(key);
+  Certificate& c = *at;
   if (fresh) {
     c.polys = std::move(polys);
     c.sign = sign;
@@ -99,10 +99,10 @@ void Kinetic_segment_bsp<K>::index(const Segment_certificate_key& key) {
   for (auto& keys : by_segment_) keys.clear();
   indexed_ = 0;
   for (const auto* m : {&certs_, &limbo_})
-    for (const auto& [k, c] : *m) {
+    m->for_each([&](const Segment_certificate_key& k, const Certificate&) {
       add(k);
       ++indexed_;
-    }
+    });
 }
 
 template <class K>
@@ -128,8 +128,8 @@ void Kinetic_segment_bsp<K>::schedule(const Segment_certificate_key& key, Certif
 
 template <class K>
 bool Kinetic_segment_bsp<K>::stale(const Entry& e) const {
-  const auto it = certs_.find(e.key);
-  return it == certs_.end() || it->second.version != e.version;
+  const Certificate* c = certs_.find(e.key);
+  return !c || c->version != e.version;
 }
 
 template <class K>
@@ -152,14 +152,14 @@ void Kinetic_segment_bsp<K>::drop(const Segment_certificate_key& key, std::int32
     l->second.erase(std::remove(l->second.begin(), l->second.end(), std::pair{key, node}), l->second.end());
     if (l->second.empty()) by_crossing_.erase(l);
   }
-  const auto it = certs_.find(key);
-  if (it == certs_.end()) return;  // a failing certificate, gone already
-  auto& nodes = it->second.nodes;
+  Certificate* c = certs_.find(key);
+  if (!c) return;  // a failing certificate, gone already
+  auto& nodes = c->nodes;
   const auto at = std::find(nodes.begin(), nodes.end(), node);
   if (at == nodes.end()) return;  // made again since, elsewhere
   nodes.erase(at);
   if (!nodes.empty()) return;
-  limbo_.insert(certs_.extract(it));
+  limbo_[key] = std::move(*certs_.take(key));
 }
 
 template <class K>
@@ -178,8 +178,7 @@ void Kinetic_segment_bsp<K>::move_keys(std::size_t from, std::size_t to) {
   // A node's list may name a key dropped since through by_crossing_: it
   // is in force no more, or no more at `from`, and nothing names it there.
   for (const Segment_certificate_key& key : node_keys_[from]) {
-    if (const auto it = certs_.find(key); it != certs_.end())
-      std::replace(it->second.nodes.begin(), it->second.nodes.end(), was, is);
+    if (Certificate* c = certs_.find(key)) std::replace(c->nodes.begin(), c->nodes.end(), was, is);
     for (const Site_point& x : {key.p, key.q})
       if (const auto at = by_crossing_.find(x); at != by_crossing_.end())
         std::replace(at->second.begin(), at->second.end(), std::pair{key, was}, std::pair{key, is});
@@ -344,11 +343,11 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
   // entries at the nodes that decided them, since the frontier replay keeps
   // some of those nodes and decides the keys there again.
   pred_.held([this](const Segment_certificate_key& key) -> std::optional<int> {
-    if (const auto it = certs_.find(key); it != certs_.end()) return it->second.sign;
-    const auto it = limbo_.find(key);
-    if (it == limbo_.end()) return std::nullopt;
-    const int sign = it->second.sign;
-    certs_.insert(limbo_.extract(it));
+    if (const Certificate* c = certs_.find(key)) return c->sign;
+    std::optional<Certificate> c = limbo_.take(key);
+    if (!c) return std::nullopt;
+    const int sign = c->sign;
+    certs_[key] = std::move(*c);
     return sign;
   });
   struct Done {
@@ -405,7 +404,7 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
   std::vector<Segment_certificate_key> named;
   auto& indexed = by_segment_[segment];
   for (auto it = indexed.begin(); it != indexed.end();)
-    if (certs_.count(*it)) named.push_back(*it++);
+    if (certs_.find(*it)) named.push_back(*it++);
     else it = indexed.erase(it);
   std::sort(named.begin(), named.end());  // the index's order is its hash's
   std::vector<Failing> failing;
@@ -442,12 +441,12 @@ std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> Kinet
   std::vector<std::int32_t> id(tree_.nodes.size(), -1);
   for (std::size_t i = 0; i < order.size(); ++i) id[order[i]] = static_cast<std::int32_t>(i);
   std::vector<std::pair<Segment_certificate_key, std::vector<std::int32_t>>> list;
-  for (const auto& [key, c] : certs_) {
+  certs_.for_each([&](const Segment_certificate_key& key, const Certificate& c) {
     std::vector<std::int32_t> nodes;
     for (const std::int32_t n : c.nodes) nodes.push_back(n < 0 ? -1 : id[static_cast<std::size_t>(n)]);
     std::sort(nodes.begin(), nodes.end());
     list.emplace_back(key, std::move(nodes));
-  }
+  });
   std::sort(list.begin(), list.end());
   return list;
 }

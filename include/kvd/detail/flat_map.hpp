@@ -15,6 +15,8 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -44,16 +46,24 @@ public:
     return {&slots_[place(Slot{tag(key), key, Value{}})].value, true};
   }
   Value& operator[](const Key& key) { return *try_emplace(key).first; }
+  // The value under `key`, which must be there (std::out_of_range).
+  Value& at(const Key& key) {
+    if (Value* v = find(key)) return *v;
+    throw std::out_of_range("Flat_map::at: no such key");
+  }
+  const Value& at(const Key& key) const { return const_cast<Flat_map*>(this)->at(key); }
 
-  // Erases `key` if present: the elements after it in its run, each away
-  // from its home, move back one slot.
+  // Erases `key` if present.
   void erase(const Key& key) {
-    std::size_t i = position(key);
-    if (i == npos) return;
-    --size_;
-    for (std::size_t j = next(i); slots_[j].tag != 0 && distance(j) > 0; i = j, j = next(j))
-      slots_[i] = std::move(slots_[j]);
-    slots_[i] = Slot{};
+    if (const std::size_t i = position(key); i != npos) erase_slot(i);
+  }
+  // Erases `key` and returns its value, or none when absent.
+  std::optional<Value> take(const Key& key) {
+    const std::size_t i = position(key);
+    if (i == npos) return std::nullopt;
+    std::optional<Value> v(std::move(slots_[i].value));
+    erase_slot(i);
+    return v;
   }
 
   std::size_t size() const { return size_; }
@@ -76,6 +86,14 @@ private:
   };
 
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  // The elements after slot i in its run, each away from its home, move
+  // back one slot over it.
+  void erase_slot(std::size_t i) {
+    --size_;
+    for (std::size_t j = next(i); slots_[j].tag != 0 && distance(j) > 0; i = j, j = next(j))
+      slots_[i] = std::move(slots_[j]);
+    slots_[i] = Slot{};
+  }
   static std::uint64_t tag(const Key& key) { return static_cast<std::uint64_t>(Hash()(key)) | 1u; }
   std::size_t mask() const { return slots_.size() - 1; }
   std::size_t home(std::uint64_t h) const { return fibonacci_slot(h, std::countr_zero(slots_.size())); }

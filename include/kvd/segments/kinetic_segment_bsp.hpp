@@ -58,10 +58,10 @@
 #include <optional>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
+#include "kvd/detail/flat_map.hpp"
 #include "kvd/detail/kinetic/root_cache.hpp"
 #include "kvd/detail/kinetic/time_heap.hpp"
 #include "kvd/detail/segments/bsp_builder.hpp"
@@ -229,7 +229,10 @@ private:
   Segment_predicates<K> pred_;
   Cylindrical_bsp tree_;
   Build_log log_;
-  using Certificates = std::unordered_map<Segment_certificate_key, Certificate, Segment_certificate_key_hash>;
+  // Stored flat: every sign the run reads from a certificate in force is a
+  // lookup here (kvd/detail/flat_map.hpp; a reference into it holds only
+  // until the next insertion or erasure).
+  using Certificates = kvd::detail::Flat_map<Segment_certificate_key, Certificate, Segment_certificate_key_hash>;
   Certificates certs_;
   // During an update: the certificates in force at its start that have lost
   // every node. One decided again is taken back, with its polynomials and
