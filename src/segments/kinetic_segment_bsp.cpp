@@ -82,27 +82,38 @@ void Kinetic_segment_bsp<K>::record(const Segment_certificate_key& key, std::vec
   node_keys_[static_cast<std::size_t>(node)].push_back(key);
 }
 
-// The index may hold keys of certificates gone since (set_motion skips and
-// drops them); when it holds twice as many keys as there are certificates,
-// those in limbo counted (an update that forgets a large subtree moves most
-// of them there), it is made again from both, so at every insertion its
-// size is within a constant of theirs (limbo empties at the end of an
-// update, and the next insertion may find it twice over and remake it), at
-// a constant amortized cost per certificate made.
+// The index by segment is made at the first flight-plan change, from the
+// certificates in force and in limbo, and kept from then on: a run without
+// one does not pay for it at every certificate made. It may hold keys of
+// certificates gone since (set_motion skips and drops them); when it holds
+// twice as many keys as there are certificates, those in limbo counted (an
+// update that forgets a large subtree moves most of them there), it is made
+// again from both, so at every insertion its size is within a constant of
+// theirs (limbo empties at the end of an update, and the next insertion may
+// find it twice over and remake it), at a constant amortized cost per
+// certificate made.
 template <class K>
 void Kinetic_segment_bsp<K>::index(const Segment_certificate_key& key) {
-  if (by_segment_.empty()) by_segment_.resize(scene_.segments.size());
-  const auto add = [&](const Segment_certificate_key& k) {
-    for (const std::size_t s : named_segments(k)) by_segment_[s].insert(k);
-  };
-  if (++indexed_ <= 2 * (certs_.size() + limbo_.size()) + 64) return add(key);
-  for (auto& keys : by_segment_) keys.clear();
+  if (!indexing_) return;
+  if (++indexed_ <= 2 * (certs_.size() + limbo_.size()) + 64) return enter(key);
+  make_index();
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::make_index() {
+  by_segment_.assign(scene_.segments.size(), {});
   indexed_ = 0;
+  indexing_ = true;
   for (const auto* m : {&certs_, &limbo_})
     m->for_each([&](const Segment_certificate_key& k, const Certificate&) {
-      add(k);
+      enter(k);
       ++indexed_;
     });
+}
+
+template <class K>
+void Kinetic_segment_bsp<K>::enter(const Segment_certificate_key& key) {
+  for (const std::size_t s : named_segments(key)) by_segment_[s].insert(key);
 }
 
 template <class K>
@@ -402,6 +413,7 @@ bool Kinetic_segment_bsp<K>::set_motion(std::size_t segment, const Segment_motio
   // decided again: the same sign makes new polynomials and a new failure
   // time; another sign is a change now.
   std::vector<Segment_certificate_key> named;
+  if (!indexing_) make_index();
   auto& indexed = by_segment_[segment];
   for (auto it = indexed.begin(); it != indexed.end();)
     if (certs_.find(*it)) named.push_back(*it++);

@@ -173,7 +173,11 @@ private:
   };
 
   void record(const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node, int sign);
+  // The certificate entered in the index by segment, once that is made
+  // (see index() in the source); the index made from the certificates.
   void index(const Segment_certificate_key& key);
+  void make_index();
+  void enter(const Segment_certificate_key& key);
   typename Segment_predicates<K>::Recorder recorder();
   // Queues the certificate's next failure after now, within the span.
   void schedule(const Segment_certificate_key& key, Certificate& c);
@@ -245,6 +249,7 @@ private:
   // The certificate keys naming each segment, for set_motion (see index()).
   std::vector<std::unordered_set<Segment_certificate_key, Segment_certificate_key_hash>> by_segment_;
   std::size_t indexed_ = 0;  // keys added to by_segment_ since it was last made
+  bool indexing_ = false;    // by_segment_ made (at the first set_motion) and kept
   kinetic::Time_heap<K, Entry> queue_{k_};
   std::uint64_t versions_ = 0;
   kinetic::Root_cache<K> roots_;
