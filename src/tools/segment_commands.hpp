@@ -39,26 +39,39 @@ int segment_simulate(const Scene_args& sa, const std::string& text, const Segmen
 // The same with o.paper (src/tools/segment_simulate_paper.cpp).
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 
+// How run_batches stopped ("limit", "events" or "exhausted"), after how
+// many batches and certificate failures.
+struct Batches_run {
+  std::string stopped;
+  std::size_t batches = 0, failures = 0;
+};
+
 // Advances `run` (a kinetic segment BSP of kernel k) batch by batch up to
 // o.until or the batch holding the o.max_events-th failure, handing each
 // batch to take(batch) (a run's batches are not kept: their record would
-// grow with the run), with progress on stderr; why it stopped: "limit",
-// "events" or "exhausted".
+// grow with the run), with progress on stderr.
 template <class Run, class K, class Take>
-std::string run_batches(Run& run, const K& k, const Segment_run_options& o, Take take) {
+Batches_run run_batches(Run& run, const K& k, const Segment_run_options& o, Take take) {
   const auto progress = progress_every_few_seconds("kvd simulate");
   std::optional<typename K::Time> until;
   if (o.until) until = k.time(from_rational<typename K::FT>(*o.until));
-  std::size_t batches = 0, failures = 0;
+  Batches_run r;
   while (const auto next = run.next_event_time()) {
-    if (until && k.compare(*next, *until) > 0) return "limit";
-    if (failures >= o.max_events) return "events";
+    if (until && k.compare(*next, *until) > 0) {
+      r.stopped = "limit";
+      return r;
+    }
+    if (r.failures >= o.max_events) {
+      r.stopped = "events";
+      return r;
+    }
     typename Run::Batch b = run.advance();
-    failures += b.failing.size();
+    r.failures += b.failing.size();
     take(std::move(b));
-    progress(++batches, failures);
+    progress(++r.batches, r.failures);
   }
-  return "exhausted";
+  r.stopped = "exhausted";
+  return r;
 }
 
 struct Segment_certify_options {

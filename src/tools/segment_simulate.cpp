@@ -21,11 +21,9 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
   Kinetic kin(k, s, o.validate, o.update);
   std::vector<typename Kinetic::Batch> listed;  // with --list
   std::array<std::size_t, 4> events{}, changed_by{};
-  std::size_t batches = 0, failures = 0, changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
+  std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
   std::vector<double> ms, rebuilt, signs;
-  std::string stopped = run_batches(kin, k, o, [&](typename Kinetic::Batch&& b) {
-    ++batches;
-    failures += b.failing.size();
+  auto [stopped, batches, failures] = run_batches(kin, k, o, [&](typename Kinetic::Batch&& b) {
     signs.push_back(static_cast<double>(b.signs));
     frontier += b.frontier_replays;
     subtree += b.subtree_replays;

@@ -34,14 +34,12 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   using Run = segments::Aeg_kinetic_bsp<Exact_kernel>;
   Run run(k, s, o.validate);
   std::vector<Run::Batch> listed;  // with --list
-  std::size_t batches = 0, failures = 0, changed = 0, simultaneous = 0;
+  std::size_t changed = 0, simultaneous = 0;
   std::size_t replays = 0, frontier = 0, flipped = 0;
   std::array<std::size_t, 3> by_kind{};
   std::vector<double> ms, made, certified, signs;
-  const std::string stopped = run_batches(run, k, o, [&](Run::Batch&& b) {
-    ++batches;
+  const auto [stopped, batches, failures] = run_batches(run, k, o, [&](Run::Batch&& b) {
     signs.push_back(static_cast<double>(b.signs));
-    failures += b.failing.size();
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
     replays += b.replays;
