@@ -96,10 +96,20 @@ TEMPLATE_TEST_CASE("trimming the time heap drops the stale entries and keeps the
   }
   const auto is_stale = [&](const Entry& e) { return static_cast<bool>(stale[static_cast<std::size_t>(e.id)]); };
   const std::size_t live = static_cast<std::size_t>(std::count(stale.begin(), stale.end(), false));
-  // Within twice the live entries: nothing is dropped.
-  heap.trim(2500, is_stale);
-  CHECK(heap.size() == 5000);
-  heap.trim(live, is_stale);
+  REQUIRE(live > 1024);
+  // Past 2^10 entries before any trim: the stale ones go.
+  heap.trim(is_stale);
+  CHECK(heap.size() == live);
+  // Then stale entries up to twice what that trim left stay, and one more
+  // makes the heap trim again, however many certificates the owner has.
+  const auto push_stale = [&](long time) {
+    stale.push_back(true);
+    heap.push({k.time(typename K::FT(time) / typename K::FT(7)), static_cast<int>(stale.size() - 1)});
+    heap.trim(is_stale);
+  };
+  for (std::size_t i = 0; i < live; ++i) push_stale(static_cast<long>(i % 1000));
+  CHECK(heap.size() == 2 * live);
+  push_stale(3);
   CHECK(heap.size() == live);
   // The live entries come off in time order, every one of them.
   std::vector<int> seen;

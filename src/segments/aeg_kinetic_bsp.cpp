@@ -712,7 +712,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   now_ = b.time;
   update(entries, b);
   next_event_time();  // up to the next queue minimum: stale entries off the heap
-  queue_.trim(certificates(), [this](const Entry& e) { return stale(e); });
+  queue_.trim([this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start - aside).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;

@@ -304,7 +304,7 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   for (const auto& key : b.failing) certs_.erase(key);
   b.changed = guarded([&] { b.changed = update(failing, b); }) || b.changed;
   next_event_time();  // up to the next queue minimum: stale entries off the heap
-  queue_.trim(certificates(), [this](const Entry& e) { return stale(e); });
+  queue_.trim([this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.signs = pred_.counts().decided() - signs.decided();
   b.held = pred_.counts().held - signs.held;

@@ -2,7 +2,7 @@
 // compared by the kernel: exactly in the exact kernel. Entries go stale
 // instead of being removed (their certificate made again or gone); the
 // caller says which are, and they are dropped when they reach the top, or
-// all at once when they could be half the heap (`trim`).
+// all at once when the heap has doubled since the last such sweep (`trim`).
 #pragma once
 
 #include <algorithm>
@@ -21,7 +21,10 @@ public:
   bool empty() const { return entries_.empty(); }
   std::size_t size() const { return entries_.size(); }
   const Entry& top() const { return entries_.front(); }
-  void clear() { entries_.clear(); }
+  void clear() {
+    entries_.clear();
+    kept_ = 0;
+  }
   void push(const Entry& e) {
     entries_.push_back(e);
     std::push_heap(entries_.begin(), entries_.end(), later());
@@ -38,15 +41,19 @@ public:
     return top().time;
   }
 
-  // Drops every stale entry once the heap holds more than twice the live
-  // certificates (at least 2^10): an entry failing far ahead would stay
-  // otherwise, and the heap would grow with the run. After a trim at most
-  // `live` entries are left, so trims cost a constant per entry pushed.
+  // Drops every stale entry once the heap holds more than twice the entries
+  // a trim last left (at least 2^10): an entry failing far ahead would stay
+  // otherwise, and the heap would grow with the run. So the heap holds at
+  // most about twice its live entries as of the last trim (not twice the
+  // owner's certificates, most of which may have no failure ahead), and
+  // between two trims come at least half as many pushes as the second
+  // looks at: trims cost a constant per entry pushed.
   template <class Stale>
-  void trim(std::size_t live, Stale stale) {
-    if (entries_.size() <= 2 * std::max(live, std::size_t{1} << 10)) return;
+  void trim(Stale stale) {
+    if (entries_.size() <= 2 * std::max(kept_, std::size_t{1} << 10)) return;
     std::erase_if(entries_, stale);
     std::make_heap(entries_.begin(), entries_.end(), later());
+    kept_ = entries_.size();
   }
 
 private:
@@ -56,6 +63,7 @@ private:
 
   const K* k_;
   std::vector<Entry> entries_;
+  std::size_t kept_ = 0;  // the entries the last trim left
 };
 
 }  // namespace kvd::kinetic
