@@ -97,16 +97,20 @@ TEMPLATE_TEST_CASE("trimming the time heap drops the stale entries and keeps the
   const auto is_stale = [&](const Entry& e) { return static_cast<bool>(stale[static_cast<std::size_t>(e.id)]); };
   const std::size_t live = static_cast<std::size_t>(std::count(stale.begin(), stale.end(), false));
   REQUIRE(live > 1024);
-  // Past 2^10 entries before any trim: the stale ones go.
-  heap.trim(is_stale);
-  CHECK(heap.size() == live);
-  // Then stale entries up to twice what that trim left stay, and one more
-  // makes the heap trim again, however many certificates the owner has.
+  // The entries at the first call count as left by a sweep: twice as many
+  // stay, and one more makes the heap drop every stale entry, however many
+  // certificates its owner has.
   const auto push_stale = [&](long time) {
     stale.push_back(true);
     heap.push({k.time(typename K::FT(time) / typename K::FT(7)), static_cast<int>(stale.size() - 1)});
     heap.trim(is_stale);
   };
+  heap.trim(is_stale);
+  for (int i = 0; i < 5000; ++i) push_stale(i % 1000);
+  CHECK(heap.size() == 10000);
+  push_stale(3);
+  CHECK(heap.size() == live);
+  // Then twice what that sweep left, and no more.
   for (std::size_t i = 0; i < live; ++i) push_stale(static_cast<long>(i % 1000));
   CHECK(heap.size() == 2 * live);
   push_stale(3);

@@ -23,7 +23,7 @@ public:
   const Entry& top() const { return entries_.front(); }
   void clear() {
     entries_.clear();
-    kept_ = 0;
+    kept_.reset();
   }
   void push(const Entry& e) {
     entries_.push_back(e);
@@ -42,15 +42,18 @@ public:
   }
 
   // Drops every stale entry once the heap holds more than twice the entries
-  // a trim last left (at least 2^10): an entry failing far ahead would stay
-  // otherwise, and the heap would grow with the run. So the heap holds at
-  // most about twice its live entries as of the last trim (not twice the
-  // owner's certificates, most of which may have no failure ahead), and
-  // between two trims come at least half as many pushes as the second
-  // looks at: trims cost a constant per entry pushed.
+  // the last sweep left (at least 2^10): an entry failing far ahead would
+  // stay otherwise, and the heap would grow with the run. The entries at the
+  // first call, pushed when the owner was made and nearly all live, count
+  // as left by a sweep: sweeping them then would cost a pass over the whole
+  // heap for next to nothing. So the heap holds at most about twice its
+  // live entries, not twice the owner's certificates (most of which may
+  // have no failure ahead), and between two sweeps come at least half as
+  // many pushes as the second looks at: a constant per entry pushed.
   template <class Stale>
   void trim(Stale stale) {
-    if (entries_.size() <= 2 * std::max(kept_, std::size_t{1} << 10)) return;
+    if (!kept_) kept_ = entries_.size();
+    if (entries_.size() <= 2 * std::max(*kept_, std::size_t{1} << 10)) return;
     std::erase_if(entries_, stale);
     std::make_heap(entries_.begin(), entries_.end(), later());
     kept_ = entries_.size();
@@ -63,7 +66,7 @@ private:
 
   const K* k_;
   std::vector<Entry> entries_;
-  std::size_t kept_ = 0;  // the entries the last trim left
+  std::optional<std::size_t> kept_;  // the entries the last sweep left
 };
 
 }  // namespace kvd::kinetic
