@@ -710,7 +710,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   }
   const Segment_rule_counts signs = pred_.counts();
   now_ = b.time;
-  update(entries, b);
+  update(std::move(entries), b);
   next_event_time();  // up to the next queue minimum: stale entries off the heap
   queue_.trim([this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start - aside).count();
@@ -725,7 +725,13 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
 }
 
 template <class K>
-void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
+void Aeg_kinetic_bsp<K>::update(std::vector<Entry> entries, Batch& b) {
+  // In the order of what the certificates are about, not the heap's nor the
+  // slots': which part of the update first asks a key two parts share
+  // (Batch::phases) does not depend on the run's history.
+  std::sort(entries.begin(), entries.end(), [this](const Entry& x, const Entry& y) {
+    return before(held({x.kind, x.index}).id, held({y.kind, y.index}).id);
+  });
   // A key asked again at now_ is answered from its first decision, unless a
   // certificate being made needs its polynomials.
   const Remembering<K> remembering(pred_, now_);
@@ -739,7 +745,6 @@ void Aeg_kinetic_bsp<K>::update(const std::vector<Entry>& entries, Batch& b) {
     else if (e.kind == Aeg_certificate_kind::endpoint) failing_endpoints_.insert(e.index);
     else failing_transient.insert(e.index);
   }
-  std::sort(b.failing.begin(), b.failing.end(), before);
   std::map<std::size_t, std::uint64_t> was;  // the failing endpoints' certificates, by version
   for (const std::size_t e : failing_endpoints_) was.emplace(e, endpoint_[e].version);
   // A turning segment's endpoints have their far side changed: they leave
@@ -818,7 +823,7 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::set_motion(std::size_t se
     if (signs(c, h.index) != was[i]) failing.push_back({now_, h.kind, h.index, c.version});
     else make(c, h.index);
   }
-  update(failing, b);
+  update(std::move(failing), b);
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.certificates = certificates();
   b.certificates_made = made_ - made;

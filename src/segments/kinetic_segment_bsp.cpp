@@ -284,17 +284,16 @@ typename Kinetic_segment_bsp<K>::Batch Kinetic_segment_bsp<K>::advance() {
   }
   const Time t = *next_event_time();
   Batch b{t, {}, {}, false, 0, 0, 0};
-  std::vector<Failing> failing;
   while (!queue_.empty() && (stale(queue_.top()) || k_.compare(queue_.top().time, t) == 0)) {
-    if (!stale(queue_.top())) {
-      const auto& key = queue_.top().key;
-      b.failing.push_back(key);
-      failing.emplace_back(key, certs_.at(key).nodes);
-    }
+    if (!stale(queue_.top())) b.failing.push_back(queue_.top().key);
     queue_.pop();
   }
+  // In key order, not the heap's, so that the update does not depend on
+  // when the heap was last swept.
   std::sort(b.failing.begin(), b.failing.end());
   b.failing.erase(std::unique(b.failing.begin(), b.failing.end()), b.failing.end());
+  std::vector<Failing> failing;
+  for (const auto& key : b.failing) failing.emplace_back(key, certs_.at(key).nodes);
   const std::vector<std::size_t> turning = turning_segments(b.failing);
   for (const auto& key : b.failing) ++b.events[static_cast<std::size_t>(event_in_batch(key, scene_.rank, turning))];
   const auto start = std::chrono::steady_clock::now();

@@ -215,7 +215,7 @@ private:
   void detach(std::size_t e);
   // The batch of the failing certificates `entries` at now: the tree and
   // the certificates updated.
-  void update(const std::vector<Entry>& entries, Batch& b);
+  void update(std::vector<Entry> entries, Batch& b);
   // A transient node's certificate: taken from spare_ when a node of a
   // replayed subtree had the same cell (the same signs, so the same failure
   // time: it has not failed), else made.
