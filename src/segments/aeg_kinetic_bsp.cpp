@@ -728,7 +728,8 @@ template <class K>
 void Aeg_kinetic_bsp<K>::update(std::vector<Entry> entries, Batch& b) {
   // In the order of what the certificates are about, not the heap's nor the
   // slots': which part of the update first asks a key two parts share
-  // (Batch::phases) does not depend on the run's history.
+  // (Batch::phases), and so which signs it decides, does not depend on when
+  // the heap was last swept or refilled.
   std::sort(entries.begin(), entries.end(), [this](const Entry& x, const Entry& y) {
     return before(held({x.kind, x.index}).id, held({y.kind, y.index}).id);
   });
