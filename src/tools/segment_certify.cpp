@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "json_out.hpp"
+#include "left_at_exit.hpp"
 #include "kvd/kinetic/event_order.hpp"
 #include "segment_commands.hpp"
 
@@ -141,7 +142,7 @@ int segment_certify(const Scene_args& sa, const std::string& text, const Segment
   const segments::Segment_scene s = sa.read_segments("certify", text);
   if (o.until) require_in_span("certify", "--until", *o.until, s.start, s.end);
   const Exact_kernel k;
-  Kinetic kin(k, s, o.validate);
+  Kinetic& kin = left_at_exit<Kinetic>(k, s, o.validate);
   Recorder rec(k);
   rec.in_force(kin);
   const auto progress = progress_every_few_seconds("kvd certify");

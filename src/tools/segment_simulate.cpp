@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "json_out.hpp"
+#include "left_at_exit.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 #include "report.hpp"
@@ -18,7 +19,7 @@ namespace {
 template <class K>
 int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
   using Kinetic = segments::Kinetic_segment_bsp<K>;
-  Kinetic kin(k, s, o.validate, o.update);
+  Kinetic& kin = left_at_exit<Kinetic>(k, s, o.validate, o.update);
   std::vector<typename Kinetic::Batch> listed;  // with --list
   std::array<std::size_t, 4> events{}, changed_by{};
   std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;

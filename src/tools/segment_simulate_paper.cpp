@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "json_out.hpp"
+#include "left_at_exit.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/segments/aeg_kinetic_bsp.hpp"
 #include "report.hpp"
@@ -32,7 +33,7 @@ Json signs_by(const segments::Aeg_phases& p) {
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o) {
   const Exact_kernel k(o.filter);  // --no-filter: every sign in exact arithmetic
   using Run = segments::Aeg_kinetic_bsp<Exact_kernel>;
-  Run run(k, s, o.validate);
+  Run& run = left_at_exit<Run>(k, s, o.validate);
   std::vector<Run::Batch> listed;  // with --list
   std::size_t changed = 0, simultaneous = 0;
   std::size_t replays = 0, frontier = 0, flipped = 0;
