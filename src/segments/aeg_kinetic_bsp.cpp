@@ -316,8 +316,9 @@ template <class K>
 void Aeg_kinetic_bsp<K>::remake_beside(std::size_t n, std::size_t from, bool near) {
   const auto it = beside_.find(n);
   if (it == beside_.end()) return;
-  const std::vector<std::size_t> endpoints = std::move(it->second);
+  std::vector<std::size_t> endpoints = std::move(it->second);
   beside_.erase(it);
+  std::sort(endpoints.begin(), endpoints.end());
   for (const std::size_t e : endpoints) make_endpoint(e, from, near);
 }
 
@@ -636,6 +637,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   }
   // The endpoints beside a node gone, and beside a node kept whose cell
   // moved (it may no longer be the leaf beside them), found again.
+  std::sort(homeless.begin(), homeless.end());
   for (const auto& [e, up] : homeless) make_endpoint(e, up, near.count(up) > 0);
   for (const auto& [n, up] : recelled) remake_beside(n, up, near.count(up) > 0);
   spare_.clear();  // cells gone with their nodes
@@ -772,6 +774,9 @@ void Aeg_kinetic_bsp<K>::update(std::vector<Entry> entries, Batch& b) {
         if (!nested) top.push_back({r, std::nullopt});
       }
     }
+    // In preorder: the endpoints of a node a remake lets go are looked for
+    // from the root being made again then.
+    sort_in_preorder(tree_, top, [](const Replay_root& r) { return r.node; });
     std::vector<std::size_t> nodes;
     for (const Replay_root& r : top) nodes.push_back(r.node);
     std::set<std::size_t> dirty = changing(entries, nodes, std::move(asked));

@@ -235,6 +235,17 @@ bool located_before(const Arrival& x, const Arrival& y, const std::vector<std::s
   return rx != ry ? rx < ry : x.dir > y.dir;
 }
 
+std::vector<std::uint8_t> route(const Cylindrical_bsp& bsp, std::size_t n) {
+  std::vector<std::uint8_t> out;
+  for (std::size_t c = n; bsp.nodes[c].parent >= 0;) {
+    const auto u = static_cast<std::size_t>(bsp.nodes[c].parent);
+    out.push_back(bsp.nodes[u].child[1] == static_cast<std::int32_t>(c));
+    c = u;
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
 std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
                                                std::size_t r) {
   const auto from = std::partition_point(log.begin(), log.end(), [&](const Arrival& a) { return rank[a.segment] < r; });

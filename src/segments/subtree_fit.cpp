@@ -88,6 +88,8 @@ std::vector<std::pair<std::size_t, std::vector<Arrival>>> Subtree_fit<K>::cells_
       log.insert(log.end(), got.begin(), got.end());
     }
   }
+  // The cells pick from the old subtrees in turn (fit_cells).
+  sort_in_preorder(tree_, cells, [](const auto& c) { return c.first; });
   return cells;
 }
 

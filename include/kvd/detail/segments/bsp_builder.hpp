@@ -11,6 +11,7 @@
 // would make (proofs/segment-local-update.md).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -57,6 +58,25 @@ std::size_t point_rank(const Site_point& p, const std::vector<std::size_t>& rank
 // Puts `node` in a free slot of the tree (one of the log's, when it has
 // one; the slot's log emptied), or in a new one; returns the slot.
 std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& node);
+
+// The children taken from the root down to node n (0: left or below).
+std::vector<std::uint8_t> route(const Cylindrical_bsp& bsp, std::size_t n);
+
+// Sorts items by their nodes (`node(item)`) in the tree's preorder, so that
+// what is done to them in turn does not depend on the slots the nodes
+// happen to hold: a run made afresh numbers its nodes otherwise than one
+// that got there by events.
+template <class T, class Node>
+void sort_in_preorder(const Cylindrical_bsp& bsp, std::vector<T>& items, const Node& node) {
+  std::vector<std::pair<std::vector<std::uint8_t>, std::size_t>> keyed;
+  keyed.reserve(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) keyed.emplace_back(route(bsp, node(items[i])), i);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<T> sorted;
+  sorted.reserve(items.size());
+  for (const auto& k : keyed) sorted.push_back(std::move(items[k.second]));
+  items = std::move(sorted);
+}
 
 // The arrivals of the segment of rank r in a log (a range: a log is in rank order).
 std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, const std::vector<std::size_t>& rank,
