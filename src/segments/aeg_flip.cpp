@@ -160,7 +160,9 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(const std::vector<std::size_t>& turning, 
     edited.push_back(x);
   }
   // Certificates: the transient nodes with a new cell and the endpoints
-  // beside a leaf with one (the turning segments' own are the caller's).
+  // beside a leaf with one (the turning segments' own are the caller's), in
+  // preorder, not by slot (sort_in_preorder).
+  sort_in_preorder(tree_, edited, [](std::size_t x) { return x; });
   for (const std::size_t x : edited)
     if (transient_.count(x) || failing.count(x)) make_transient(x);
   for (const std::size_t x : edited) remake_beside(x, x);

@@ -222,7 +222,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     // certificate of the set.
     // (Its signs are counted apart from the other guards': Batch::phases;
     // abscissa_clear counts its own, the log's are moved there below.)
-    std::sort(deciding.begin(), deciding.end());
+    // In the walk's order, the tree's (a node is listed once per key, in a
+    // row), not the slots': the guard stops at the first sign that vanishes.
     deciding.erase(std::unique(deciding.begin(), deciding.end()), deciding.end());
     const long own = phases_.own_guard;
     const bool other_vanishes = [&] {
