@@ -92,6 +92,23 @@ inline std::optional<segments::Segment_scene> small_integer_scene(std::uint64_t 
   return s;
 }
 
+// Generated scenes over [0, 2], random (n_random segments) and rotating
+// (n_rotating), of seeds 1 to `seeds`, and the small-integer scenes of
+// seeds 1 to 12, named.
+inline std::vector<std::pair<std::string, segments::Segment_scene>> generated_and_small(std::size_t n_random,
+                                                                                        std::size_t n_rotating,
+                                                                                        std::uint64_t seeds) {
+  std::vector<std::pair<std::string, segments::Segment_scene>> scenes;
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    scenes.emplace_back("random " + std::to_string(seed), generated(segments::Segment_family::random, n_random, seed, 2));
+    scenes.emplace_back("rotating " + std::to_string(seed),
+                        generated(segments::Segment_family::rotating, n_rotating, seed, 2));
+  }
+  for (std::uint64_t seed = 1; seed <= 12; ++seed)
+    if (auto s = small_integer_scene(seed)) scenes.emplace_back("small " + std::to_string(seed), *s);
+  return scenes;
+}
+
 // The scenes on which the paper's certificates are checked against the
 // tree's changes (test_aeg_certificates, test_aeg_kinetic), named: five
 // bundled ones, and generated ones of the three families (the degenerate

@@ -170,13 +170,7 @@ TEST_CASE("a flight-plan change at a flip turns the segment back on the paper's 
 // the tree changes where and to what the kept run, given the same change,
 // changes it.
 TEST_CASE("flight-plan changes on generated scenes", "[segments][aeg]") {
-  std::vector<std::pair<std::string, Segment_scene>> scenes;
-  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    scenes.emplace_back("random " + std::to_string(seed), kvd::test::generated(Segment_family::random, 12, seed, 2));
-    scenes.emplace_back("rotating " + std::to_string(seed), kvd::test::generated(Segment_family::rotating, 6, seed, 2));
-  }
-  for (std::uint64_t seed = 1; seed <= 12; ++seed)
-    if (auto s = kvd::test::small_integer_scene(seed)) scenes.emplace_back("small " + std::to_string(seed), *s);
+  const auto scenes = kvd::test::generated_and_small(12, 6, 3);
   std::size_t quiet = 0, at_events = 0, failed_now = 0;
   for (const auto& [name, s] : scenes) {
     scene::Split_mix64 g(name.size() * 7919 + s.segments.size());

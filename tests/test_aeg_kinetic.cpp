@@ -565,15 +565,14 @@ TEST_CASE("a lone flip is done in place, and a flip meeting another event is rep
 // (sort_in_preorder). Taken by slot, 12 of these batches differed on the
 // paper's set, 4 of them in the signs decided.
 TEST_CASE("a run made afresh at an instant goes on as the run that got there", "[segments][aeg]") {
-  std::vector<std::pair<std::string, Segment_scene>> scenes;
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    scenes.emplace_back("random " + std::to_string(seed), kvd::test::generated(Segment_family::random, 40, seed, 2));
-    scenes.emplace_back("rotating " + std::to_string(seed), kvd::test::generated(Segment_family::rotating, 10, seed, 2));
-  }
-  for (std::uint64_t seed = 1; seed <= 12; ++seed)
-    if (auto s = kvd::test::small_integer_scene(seed)) scenes.emplace_back("small " + std::to_string(seed), *s);
+  // Both runs have their next batch at the same exact instant.
+  const auto next_together = [](auto& run, auto& afresh) {
+    const auto t = run.next_event_time(), u = afresh.next_event_time();
+    REQUIRE(u);
+    REQUIRE(kernel.compare(*t, *u) == 0);
+  };
   std::size_t compared = 0;
-  for (const auto& [name, s] : scenes) {
+  for (const auto& [name, s] : kvd::test::generated_and_small(40, 10, 6)) {
     std::vector<Exact_time> times;
     {
       Aeg_kinetic_bsp<Exact_kernel> probe(kernel, s);
@@ -589,9 +588,7 @@ TEST_CASE("a run made afresh at an instant goes on as the run that got there", "
       paper.advance_to(Exact_time(at));
       kept.advance_to(Exact_time(at));
       for (int k = 0; k < 6 && paper.next_event_time(); ++k) {
-        const auto t = paper.next_event_time(), u = paper_afresh.next_event_time();
-        REQUIRE(u);
-        REQUIRE(kernel.compare(*t, *u) == 0);
+        next_together(paper, paper_afresh);
         const auto x = paper.advance(), y = paper_afresh.advance();
         INFO("the paper's set's batch at t = " << x.time.to_string());
         CHECK(x.failing == y.failing);
@@ -603,9 +600,7 @@ TEST_CASE("a run made afresh at an instant goes on as the run that got there", "
         ++compared;
       }
       for (int k = 0; k < 6 && kept.next_event_time(); ++k) {
-        const auto t = kept.next_event_time(), u = kept_afresh.next_event_time();
-        REQUIRE(u);
-        REQUIRE(kernel.compare(*t, *u) == 0);
+        next_together(kept, kept_afresh);
         const auto x = kept.advance(), y = kept_afresh.advance();
         INFO("the kept run's batch at t = " << x.time.to_string());
         CHECK(x.failing == y.failing);
