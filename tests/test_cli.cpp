@@ -681,15 +681,26 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
   const Run kernel = run("diff " + scene + " --kernel bogus", "2>&1");
   CHECK(kernel.status == 2);
   CHECK(kernel.out.find("unknown kernel 'bogus'") != std::string::npos);
-  // The viewer shows triangle scenes: a segment scene, or the diff of one, is refused.
+  // The viewer reads a diff report with triangle scenes only: the diff of a
+  // segment scene is refused, as are the triangle page's flags.
   const std::string page = std::string(KVD_BINARY_DIR) + "/segments-view.html";
   std::remove(page.c_str());
   const std::string report = std::string(KVD_BINARY_DIR) + "/segments-diff.json";
   REQUIRE(run("diff " + scene + " --kernel double --json > " + report).status == 0);
-  for (const std::string& input : {scene, report}) {
-    CHECK(run("view " + input + " --out " + page, "2>&1").status == 2);
-    CHECK(!std::ifstream(page).good());
+  const Run refused = run("view " + report + " --out " + page, "2>&1");
+  CHECK(refused.status == 2);
+  CHECK(refused.out.find("is a segment scene (kvd-segments/1)") != std::string::npos);
+  for (const std::string flag : {"--collisions stop", "--view 1,2,3", "--until 11"}) {
+    const Run r = run("view " + scene + " " + flag + " --out " + page, "2>&1");
+    CHECK(r.status == 2);
+    CHECK(r.out.find(flag.substr(0, flag.find(' '))) != std::string::npos);
   }
+  CHECK(!std::ifstream(page).good());
+  // A segment scene's page (its contents: test_segment_page).
+  const Run viewed = run("view " + scene + " --out " + page);
+  CHECK(viewed.status == 0);
+  CHECK(viewed.out.find("kvd view: 1 batches, 1 events; wrote " + page) != std::string::npos);
+  CHECK(std::ifstream(page).good());
   const Run flag = run("diff " + scene + " --kernel double --allow-intersecting", "2>&1");
   CHECK(flag.status == 2);
   CHECK(flag.out.find("--allow-intersecting: only for triangle scenes") != std::string::npos);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Remakes the pictures of kvd view and kvd animate that the README shows: two
-# screenshots of viewer pages (headless Chromium, through
-# tests/viewer/check_page.py, which checks the pages too), and a sampled and a
+# Remakes the pictures of kvd view and kvd animate that the README shows:
+# three screenshots of viewer pages (headless Chromium, through
+# tests/viewer/check_page.py and check_segment_page.py, which check the pages
+# too), and a sampled and a
 # held frame and a GIF of an animation (ffmpeg), and the plot of the README's
 # Python example (matplotlib).
 # Usage: data/pictures/regenerate.sh [path/to/kvd] (default: build/kvd of this checkout).
@@ -13,8 +14,9 @@ trap 'rm -rf "$tmp"' EXIT
 # Selenium is Debian's (python3-selenium): prefer the Python that has it.
 py=python3
 $py -c 'import selenium' 2>/dev/null || py=/usr/bin/python3
-$py tests/viewer/check_page.py "$kvd" "$tmp" data/collisions.json --diff data/stiff/tangential.json=double --events 40
-cp "$tmp/viewer-collisions.png" "$tmp/viewer-tangential-diff.png" data/pictures/
+$py tests/viewer/check_page.py "$kvd" "$tmp" data/collisions.json data/segments/rotating-10.json \
+  --diff data/stiff/tangential.json=double --events 40
+cp "$tmp/viewer-collisions.png" "$tmp/viewer-tangential-diff.png" "$tmp/segment-viewer-rotating-10.png" data/pictures/
 
 view=30,-40,25
 args=(data/collisions.json --view "$view" --events 20 --frames 60 --hold 5 --size 480)

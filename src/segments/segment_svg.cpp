@@ -224,6 +224,10 @@ Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& 
     const Pt& p = g.endpoint(e);
     svg << "<circle class=\"endpoint\" cx=\"" << num(px.x(p.x)) << "\" cy=\"" << num(px.y(p.y)) << "\" r=\"2.5\"/>\n";
   }
+  for (const std::size_t i : o.marked) {
+    const Pt &a = g.endpoint(2 * i), &b = g.endpoint(2 * i + 1);
+    line(svg, "marked", px.x(a.x), px.y(a.y), px.x(b.x), px.y(b.y));
+  }
   for (const Site_point& c : crossings) {
     const double x = px.x(g.point(c).x), y = px.y(g.point(c).y);
     svg << "<path class=\"crossing\" d=\"M" << num(x - 4) << " " << num(y - 4) << "L" << num(x + 4) << " "

@@ -51,7 +51,7 @@ int render_segments(const Scene_args& sa, const std::string& text, const std::op
   const Exact_kernel k;
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
   const std::string svg =
-      segments::segment_svg(s, segments::build_cylindrical_bsp(pred, Exact_time(t)), t, {size, {}, {}});
+      segments::segment_svg(s, segments::build_cylindrical_bsp(pred, Exact_time(t)), t, {size, {}, {}, {}});
   if (out) write_atomically("render", *out, svg);
   else std::cout << svg;
   return 0;

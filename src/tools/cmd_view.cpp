@@ -7,6 +7,8 @@
 #include "cli.hpp"
 #include "kvd/segments/segment_io.hpp"
 #include "page_data.hpp"
+#include "segment_commands.hpp"
+#include "segment_page.hpp"
 
 namespace kvd::cli {
 
@@ -39,7 +41,18 @@ const char* const view_help =
     "  --until T       stop after the last batch at a time <= T (exact)\n"
     "  --view X,Y,Z    the camera's first position (default: in front, above)\n"
     "\n"
-    "The page holds three.js (MIT licence, Debian's libjs-three) and the data.\n"
+    "For a kvd-segments/1 scene (told apart by its \"format\"): runs the exact\n"
+    "kinetic cylindrical BSP (seed 003, as kvd simulate) and writes a page of\n"
+    "its pictures: for each interval of the run (before the first batch, then\n"
+    "after each) the cells and cuts of the tree in force, drawn at a rational\n"
+    "instant inside it with the segments the batch's failing certificates name\n"
+    "marked in red; the timeline (arrow keys step through it), each batch's\n"
+    "exact time, events and failing certificates, and the tree as an outline.\n"
+    "Every tree shown is compared with a fresh build at its instant (exit 1,\n"
+    "nothing written, if one differs). Takes --events, --until and --seed.\n"
+    "\n"
+    "The triangle page holds three.js (MIT licence, Debian's libjs-three) and\n"
+    "the data.\n"
     "FILE is written completely or not at all. Exit status: 0 on success, 1 on a\n"
     "failed validation (nothing written), 2 on bad input.\n";
 
@@ -118,6 +131,26 @@ void require_same_events(const std::string& path, const std::vector<Listed_event
                       std::to_string(i));
 }
 
+// The page of a segment scene's run (src/view/segment_page.hpp).
+int view_segments(const Scene_args& sa, const std::string& text, const std::string& out, const kinetic::Options& o) {
+  const segments::Segment_scene s = sa.read_segments("view", text);
+  if (o.until) require_in_span("view", "--until", *o.until, s.start, s.end);
+  nlohmann::json data;
+  try {
+    data = view::segment_page_data(s, std::filesystem::path(*sa.path).filename().string(),
+                                   {o.until, o.max_events, 640}, progress_every_few_seconds("kvd view"),
+                                   progress_every_few_seconds("kvd view", "intervals drawn"));
+  } catch (const view::Segment_page_invalid& e) {
+    std::cerr << "kvd view: validation failed: " << e.what() << "\n";
+    return 1;
+  }
+  const std::string html = view::segment_page_html(data);
+  write_atomically("view", out, html);
+  std::cout << "kvd view: " << data["batches"].size() << " batches, " << data["failures"].get<std::size_t>()
+            << " events; wrote " << out << " (" << html.size() / 1024 << " KiB)\n";
+  return 0;
+}
+
 }  // namespace
 
 int view(Args& args) {
@@ -125,6 +158,7 @@ int view(Args& args) {
   sa.wants_view = true;
   kinetic::Options o;
   std::optional<std::string> out, scene_of_trace;
+  bool collisions_given = false;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
@@ -135,11 +169,12 @@ int view(Args& args) {
     else if (a == "--until") o.until = exact_option("view", a, args.value(a));
     else if (a == "--out") out = args.value(a);
     else if (a == "--scene") scene_of_trace = args.value(a);
-    else if (a == "--collisions") o.collisions = collisions_option("view", args.value(a));
+    else if (a == "--collisions") {
+      o.collisions = collisions_option("view", args.value(a));
+      collisions_given = true;
+    }
     else if (a == "--json" || !sa.take(args, a)) args.unknown(a);
   }
-  if (!view::page_supported())
-    throw Usage_error("kvd view: this build has no viewer page (Debian's libjs-three was not found when it was built)");
   if (!out) throw Usage_error("kvd view: missing --out FILE.html (see kvd view --help)");
   if (!ends_with(*out, ".html"))
     throw Usage_error("kvd view: --out must name an .html file");
@@ -159,10 +194,18 @@ int view(Args& args) {
   }
   if (listed) o.max_events = listed->size();
   const std::string scene_text = sa.read_text("view");
-  if (segments::scene_format(scene_text) == "kvd-segments/1")
-    throw Usage_error("kvd view: " + *sa.path +
-                      ": a segment scene (kvd-segments/1); the viewer shows triangle scenes: draw segments with kvd "
-                      "render or film them with kvd animate");
+  if (segments::scene_format(scene_text) == "kvd-segments/1") {
+    if (listed)
+      throw Usage_error("kvd view: " + input + ": a report or trace is read with a triangle scene only; " + *sa.path +
+                        " is a segment scene (kvd-segments/1)");
+    std::vector<std::string> triangle_only;
+    if (collisions_given) triangle_only.push_back("--collisions");
+    if (sa.view) triangle_only.push_back("--view");
+    refuse_triangle_flags("view", triangle_only);
+    return view_segments(sa, scene_text, *out, o);
+  }
+  if (!view::page_supported())
+    throw Usage_error("kvd view: this build has no viewer page (Debian's libjs-three was not found when it was built)");
   const scene::Scene s = sa.read_scene("view", scene_text);
   if (o.until) require_in_span("view", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd view");

@@ -1,25 +1,31 @@
-// The page of kvd view: web/viewer.html with its assets and data inlined.
+// The pages of kvd view: web/viewer.html (triangles) and web/segments.html
+// (segments) with their assets and data inlined.
 #include <stdexcept>
 
 #include "page_data.hpp"
+#include "segment_page.hpp"
 
 namespace kvd::view {
 
-#ifdef KVD_HAVE_VIEWER
 namespace assets {
-// Generated from web/ and Debian's libjs-three by cmake/embed_assets.cmake.
-extern const char* const page;
+// Generated from web/ (and, for the triangle page, Debian's libjs-three) by
+// cmake/embed_assets.cmake.
 extern const char* const style;
+extern const char* const segment_page;
+extern const char* const segment_script;
+#ifdef KVD_HAVE_VIEWER
+extern const char* const page;
 extern const char* const viewer;
 extern const char* const three;
 extern const char* const orbit;
+#endif
 }  // namespace assets
 
 namespace {
 
 void replace(std::string& s, const std::string& marker, const std::string& with) {
   const auto at = s.find(marker);
-  if (at == std::string::npos) throw std::logic_error("web/viewer.html has no " + marker);
+  if (at == std::string::npos) throw std::logic_error("the page has no " + marker);
   s.replace(at, marker.size(), with);
 }
 
@@ -29,8 +35,22 @@ std::string script_safe(std::string s) {
   return s;
 }
 
+std::string json_text(const nlohmann::json& data) {
+  return script_safe(data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
 }  // namespace
 
+std::string segment_page_html(const nlohmann::json& data) {
+  std::string page = assets::segment_page;
+  // In order: the data and the script hold no markers of their own.
+  replace(page, "/*KVD_STYLE*/", assets::style);
+  replace(page, "/*KVD_SEGMENTS*/", assets::segment_script);
+  replace(page, "/*KVD_DATA*/", json_text(data));
+  return page;
+}
+
+#ifdef KVD_HAVE_VIEWER
 std::string page_html(const nlohmann::json& data) {
   std::string page = assets::page;
   // In order: the data and the viewer hold no markers of their own.
@@ -38,7 +58,7 @@ std::string page_html(const nlohmann::json& data) {
   replace(page, "/*KVD_THREE*/", assets::three);
   replace(page, "/*KVD_ORBIT*/", assets::orbit);
   replace(page, "/*KVD_VIEWER*/", assets::viewer);
-  replace(page, "/*KVD_DATA*/", script_safe(data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+  replace(page, "/*KVD_DATA*/", json_text(data));
   return page;
 }
 

@@ -9,7 +9,8 @@ chromium-driver, through Selenium) and checks them against kvd's own trace:
   * clicking the k-th batch (first, middle, last) shows its exact time and
     every failing certificate's type and features;
   * a diff page lists every exact event of the report and marks the first
-    divergence.
+    divergence;
+  * a segment scene's page, as check_segment_page.py says.
 
 usage: check_page.py KVD OUTDIR SCENE [SCENE ...] [--diff SCENE=KERNEL] [--events N]
 Screenshots go to OUTDIR. Exit 0 when every check passes, 1 otherwise, 77
@@ -85,17 +86,24 @@ def drawn_pixels(d):
       return n;""")
 
 
-def check_scene_page(d, kvd, scene, events, outdir):
-    from selenium.webdriver.common.by import By
+def load_page(d, kvd, scene, events, outdir):
+    """Writes the kvd view page of the scene's first `events` failures into
+    outdir and loads it, failing on a console error: (name, page path)."""
     name = os.path.splitext(os.path.basename(scene))[0]
     page = os.path.join(outdir, name + ".html")
     subprocess.run([kvd, "view", scene, "--events", str(events), "--out", page], check=True,
                    stdout=subprocess.DEVNULL)
     d.get("file://" + os.path.abspath(page))
-    d.execute_script("return window.kvdViewer !== undefined") or fail(name + ": the viewer did not start")
     errors = console_errors(d)
     if errors:
         fail(name + ": console errors: " + "; ".join(errors))
+    return name, page
+
+
+def check_scene_page(d, kvd, scene, events, outdir):
+    from selenium.webdriver.common.by import By
+    name, page = load_page(d, kvd, scene, events, outdir)
+    d.execute_script("return window.kvdViewer !== undefined") or fail(name + ": the viewer did not start")
     if drawn_pixels(d) < 100:
         fail(name + ": the 3D view drew nothing")
     expected = trace_batches(kvd, scene, events, outdir)
@@ -178,7 +186,11 @@ def main():
     d = browser()
     try:
         for s in a.scenes:
-            check_scene_page(d, a.kvd, s, a.events, a.outdir)
+            if json.load(open(s)).get("format") == "kvd-segments/1":
+                from check_segment_page import check_segment_page
+                check_segment_page(d, a.kvd, s, a.events, a.outdir)
+            else:
+                check_scene_page(d, a.kvd, s, a.events, a.outdir)
         for sk in a.diff:
             scene, kernel = sk.split("=", 1)
             check_diff_page(d, a.kvd, scene, kernel, a.events, a.outdir)

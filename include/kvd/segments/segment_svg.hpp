@@ -37,6 +37,9 @@ struct Segment_svg_options {
   int size = 800;                  // the picture's width in pixels
   std::optional<View_box> box;     // the region drawn; view_box(scene, t) by default
   std::vector<std::string> notes;  // caption lines after the scene's name and the counts; "" keeps a line free
+  // Segments drawn once more on top, with the class "marked" (which
+  // segment_svg_style() leaves to the document to style).
+  std::vector<std::size_t> marked;
 };
 
 // The elements of a picture, without the <svg> element around them, and the

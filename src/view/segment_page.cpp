@@ -1,0 +1,128 @@
+#include "segment_page.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "animation.hpp"
+#include "kvd/segments/kinetic_segment_bsp.hpp"
+#include "kvd/segments/segment_svg.hpp"
+
+namespace kvd::view {
+
+namespace {
+
+using Run = segments::Kinetic_segment_bsp<Exact_kernel>;
+
+// An interval of the run: from a batch (none: the start) to the next
+// failure (none: the run's end), and the tree in force there.
+struct Run_interval {
+  std::optional<std::size_t> batch;
+  segments::Cylindrical_bsp tree;
+  mpq_class instant;
+};
+
+std::string approx(double t) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.10g", t);
+  return buf;
+}
+
+nlohmann::json batch_json(const Exact_kernel& k, const Run::Batch& b) {
+  nlohmann::json events = nlohmann::json::object(), failing = nlohmann::json::array();
+  for (std::size_t e = 0; e < 4; ++e)
+    if (b.events[e]) events[segments::segment_event_names[e]] = b.events[e];
+  for (const auto& key : b.failing) {
+    nlohmann::json named = nlohmann::json::array();
+    for (const std::size_t s : segments::named_segments(key))
+      if (std::find(named.begin(), named.end(), s) == named.end()) named.push_back(s);
+    failing.push_back({{"kind", segments::kind_name(key.kind)}, {"features", segments::features(key)}, {"segments", named}});
+  }
+  return {{"time", k.to_string(b.time)}, {"approx", approx(k.to_double(b.time))}, {"events", events},
+          {"failing", failing}, {"changed", b.changed}, {"nodes_rebuilt", b.nodes_rebuilt},
+          {"certificates", b.certificates}};
+}
+
+}  // namespace
+
+nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::string& title,
+                                 const Segment_page_options& o,
+                                 const std::function<void(std::size_t, std::size_t)>& run_progress,
+                                 const std::function<void(std::size_t, std::size_t)>& draw_progress) {
+  const Exact_kernel k;
+  Run run(k, s, false);
+  const mpq_class within = (s.end ? *s.end - s.start : mpq_class(1)) / 1000;
+  // The instant drawn for the interval from `from` to the next failure.
+  const auto inside = [&](const Exact_time& from, const std::optional<Exact_time>& to) {
+    return just_after(from, to ? *to : Exact_time(from.upper() + within), within);
+  };
+  std::vector<Run::Batch> batches;
+  std::vector<Run_interval> intervals;
+  std::optional<Exact_time> next = run.next_event_time();
+  intervals.push_back({std::nullopt, run.tree(), inside(Exact_time(s.start), next)});
+  std::size_t failures = 0;
+  std::string stopped = "exhausted";
+  for (; next; next = run.next_event_time()) {
+    if (o.until && k.compare(*next, Exact_time(*o.until)) > 0) {
+      stopped = "limit";
+      break;
+    }
+    if (failures >= o.max_events) {
+      stopped = "events";
+      break;
+    }
+    batches.push_back(run.advance());
+    failures += batches.back().failing.size();
+    intervals.push_back({batches.size() - 1, run.tree(), mpq_class()});
+    if (run_progress) run_progress(batches.size(), failures);
+  }
+  for (std::size_t i = 1; i < intervals.size(); ++i)
+    intervals[i].instant = inside(batches[*intervals[i].batch].time,
+                                  i + 1 < intervals.size() ? std::optional<Exact_time>(batches[i].time) : next);
+
+  segments::Segment_svg_options svg;
+  svg.size = o.size;
+  svg.box = segments::view_box(s, intervals.front().instant);
+  for (const Run_interval& v : intervals) svg.box = segments::hull(*svg.box, segments::view_box(s, v.instant));
+  const segments::Segment_predicates<Exact_kernel> pred(k, s);
+  nlohmann::json shown = nlohmann::json::array();
+  int width = 0, height = 0;
+  for (const Run_interval& v : intervals) {
+    const std::string text = v.tree.text();
+    if (segments::build_cylindrical_bsp(pred, Exact_time(v.instant)).text() != text)
+      throw Segment_page_invalid("the tree in force at t = " + v.instant.get_str() +
+                                 " differs from a fresh build there");
+    svg.marked.clear();
+    if (v.batch)
+      for (const auto& key : batches[*v.batch].failing)
+        for (const std::size_t seg : segments::named_segments(key))
+          if (std::find(svg.marked.begin(), svg.marked.end(), seg) == svg.marked.end()) svg.marked.push_back(seg);
+    svg.notes = {v.batch ? "after batch " + std::to_string(*v.batch + 1) + " of " + std::to_string(batches.size())
+                         : "before the first batch"};
+    const segments::Segment_picture pic = segments::draw_segment_bsp(s, v.tree, v.instant, svg);
+    width = pic.width;
+    height = pic.height;
+    const segments::Bsp_counts c = v.tree.counts();
+    shown.push_back({{"instant", v.instant.get_str()}, {"picture", pic.elements}, {"tree", text},
+                     {"nodes", c.nodes}, {"height", c.height}});
+    if (draw_progress) draw_progress(shown.size(), intervals.size());
+  }
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& b : batches) list.push_back(batch_json(k, b));
+  return {{"format", "kvd-segment-view/1"},
+          {"title", title},
+          {"scene", s.name},
+          {"segments", s.segments.size()},
+          {"start", s.start.get_str()},
+          {"failures", failures},
+          {"stopped", stopped},
+          {"time_reached", k.to_string(run.now())},
+          {"time_reached_approx", approx(k.to_double(run.now()))},
+          {"width", width},
+          {"height", height},
+          {"style", segments::segment_svg_style()},
+          {"batches", list},
+          {"intervals", shown}};
+}
+
+}  // namespace kvd::view
