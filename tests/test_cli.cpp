@@ -690,7 +690,7 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
   const Run refused = run("view " + report + " --out " + page, "2>&1");
   CHECK(refused.status == 2);
   CHECK(refused.out.find("is a segment scene (kvd-segments/1)") != std::string::npos);
-  for (const std::string flag : {"--collisions stop", "--view 1,2,3", "--until 11"}) {
+  for (const std::string flag : {"--collisions stop", "--view 1,2,3", "--until 11", "--allow-intersecting"}) {
     const Run r = run("view " + scene + " " + flag + " --out " + page, "2>&1");
     CHECK(r.status == 2);
     CHECK(r.out.find(flag.substr(0, flag.find(' '))) != std::string::npos);

@@ -60,23 +60,46 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
       from = b.time;
     }
     const mpq_class instant(intervals[i].at("instant").get<std::string>());
-    CHECK(k.compare(Exact_time(instant), from ? *from : Exact_time(s.start)) > 0);
+    // A batch at the span's end is drawn there (the tree at an instant is
+    // the one just after it); every other instant lies strictly after.
+    if (from && s.end && k.compare(*from, Exact_time(*s.end)) == 0) CHECK(instant == *s.end);
+    else CHECK(k.compare(Exact_time(instant), from ? *from : Exact_time(s.start)) > 0);
+    if (s.end) CHECK(instant <= *s.end);
     if (const auto next = run.next_event_time()) CHECK(k.compare(Exact_time(instant), *next) < 0);
     const std::string tree = intervals[i].at("tree");
     CHECK(tree == run.tree().text());
     CHECK(tree == build_cylindrical_bsp(pred, Exact_time(instant)).text());
-    CHECK(occurrences(intervals[i].at("picture"), "<line class=\"marked\"") == named.size());
+    std::set<std::size_t> marked;
+    const std::string picture = intervals[i].at("picture");
+    const std::string attribute = "class=\"marked\" data-segment=\"";
+    for (auto at = picture.find(attribute); at != std::string::npos; at = picture.find(attribute, at + 1))
+      CHECK(marked.insert(std::stoul(picture.substr(at + attribute.size()))).second);
+    CHECK(marked == named);
   }
   CHECK(data.at("failures") == failures);
-  // Where the page stopped: the run has no failure left, or the page
-  // stopped before the batch after the limit.
-  const std::string stopped = data.at("stopped");
-  CHECK(stopped == (run.next_event_time() ? stopped : "exhausted"));
+  // Where the page stopped: the run has no failure left, or its next batch
+  // lies after the limit, or else the page has its events.
+  const auto next = run.next_event_time();
+  const std::string stopped = !next                                                 ? "exhausted"
+                              : until && k.compare(*next, Exact_time(*until)) > 0 ? "limit"
+                                                                                  : "events";
+  CHECK(data.at("stopped") == stopped);
   if (stopped == "events") {
     CHECK(failures >= max_events);
     if (!batches.empty()) CHECK(failures - batches.back().at("failing").size() < max_events);
   }
-  if (stopped == "limit") CHECK(k.compare(*run.next_event_time(), Exact_time(*until)) > 0);
+}
+
+// The bundled scene `name` with its span ending at its first batch.
+Segment_scene ending_at_first_batch(const std::string& name) {
+  Segment_scene s = bundled(name);
+  const Exact_kernel k;
+  Run run(k, s, false);
+  const auto first = run.next_event_time();
+  REQUIRE(first);
+  REQUIRE(first->is_rational());
+  s.end = first->rational();
+  return s;
 }
 
 }  // namespace
@@ -89,6 +112,17 @@ TEST_CASE("the segment page shows the tree in force in every interval of the run
     CAPTURE(name);
     const nlohmann::json data = view::segment_page_data(s, name, {std::nullopt, std::size_t(events), 320});
     check_page(s, data, std::size_t(events));
+  }
+}
+
+TEST_CASE("a batch at the span's end is drawn at the end, not after it", "[view][segments]") {
+  for (const std::string name : {"over-endpoint", "turning-vertical"}) {
+    const Segment_scene s = ending_at_first_batch(name);
+    CAPTURE(name);
+    const nlohmann::json data = view::segment_page_data(s, name, {std::nullopt, 100, 320});
+    REQUIRE(data.at("batches").size() == 1);
+    CHECK(data.at("intervals")[1].at("instant") == s.end->get_str());
+    check_page(s, data, 100);
   }
 }
 
@@ -109,7 +143,8 @@ TEST_CASE("the segment page stops at --until, after the last batch at or before 
 
 TEST_CASE("the segment page inlines its data, script and style whole", "[view][segments]") {
   const Segment_scene s = bundled("over-endpoint");
-  const nlohmann::json data = view::segment_page_data(s, "over-endpoint <&>", {std::nullopt, 100, 320});
+  const nlohmann::json data =
+      view::segment_page_data(s, "over-endpoint <&> x</script><!--<script>", {std::nullopt, 100, 320});
   const std::string html = view::segment_page_html(data);
   CHECK(html.find("/*KVD_") == std::string::npos);
   const std::string open = "<script type=\"application/json\" id=\"kvd-data\">";
@@ -119,4 +154,5 @@ TEST_CASE("the segment page inlines its data, script and style whole", "[view][s
   REQUIRE(to != std::string::npos);
   CHECK(nlohmann::json::parse(html.substr(from + open.size(), to - from - open.size())) == data);
   CHECK(occurrences(html, "</script>") == 2);  // the data's and the page script's
+  CHECK(occurrences(html.substr(from, to - from), "<!--") == 0);
 }

@@ -66,7 +66,6 @@
     if (selected >= 0) items[selected].classList.remove('selected');
     selected = i;
     items[i].classList.add('selected');
-    items[i].scrollIntoView({ block: 'nearest' });
     const v = data.intervals[i];
     picture.innerHTML = data.style + v.picture;
     const batch = i > 0 ? data.batches[i - 1] : null;
@@ -96,6 +95,15 @@
     info.appendChild(drawn);
     const tree = el('tree');
     tree.replaceChildren(treeElement(parseTree(v.tree), markedSegments(batch)));
+    reveal(items[i], info);
+  }
+
+  // Scrolls the timeline to the item, clear of the event's box, which
+  // sticks to the top of the same column.
+  function reveal(item, info) {
+    item.scrollIntoView({ block: 'nearest' });
+    const hidden = info.getBoundingClientRect().bottom - item.getBoundingClientRect().top;
+    if (hidden > 0) el('left').scrollBy(0, -hidden);
   }
 
   const timeline = el('timeline');
@@ -113,8 +121,11 @@
   el('previous').addEventListener('click', () => select(selected - 1));
   el('next').addEventListener('click', () => select(selected + 1));
   document.addEventListener('keydown', (e) => {
-    if (e.key === 'ArrowLeft') select(selected - 1);
-    if (e.key === 'ArrowRight') select(selected + 1);
+    if (e.altKey || e.ctrlKey || e.metaKey || e.shiftKey) return;  // the browser's own shortcuts
+    const step = { ArrowLeft: -1, ArrowRight: 1 }[e.key];
+    if (!step) return;
+    e.preventDefault();
+    select(selected + step);
   });
   select(0);
 })();

@@ -121,8 +121,10 @@ std::string escaped(const std::string& text) {
   return out;
 }
 
-void line(std::ostream& svg, const std::string& cls, double x1, double y1, double x2, double y2) {
-  svg << "<line class=\"" << cls << "\" x1=\"" << num(x1) << "\" y1=\"" << num(y1) << "\" x2=\"" << num(x2)
+// `attributes`: more of them, each with its leading space.
+void line(std::ostream& svg, const std::string& cls, double x1, double y1, double x2, double y2,
+          const std::string& attributes = "") {
+  svg << "<line class=\"" << cls << "\"" << attributes << " x1=\"" << num(x1) << "\" y1=\"" << num(y1) << "\" x2=\"" << num(x2)
       << "\" y2=\"" << num(y2) << "\"/>\n";
 }
 
@@ -226,7 +228,7 @@ Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& 
   }
   for (const std::size_t i : o.marked) {
     const Pt &a = g.endpoint(2 * i), &b = g.endpoint(2 * i + 1);
-    line(svg, "marked", px.x(a.x), px.y(a.y), px.x(b.x), px.y(b.y));
+    line(svg, "marked", px.x(a.x), px.y(a.y), px.x(b.x), px.y(b.y), " data-segment=\"" + std::to_string(i) + "\"");
   }
   for (const Site_point& c : crossings) {
     const double x = px.x(g.point(c).x), y = px.y(g.point(c).y);

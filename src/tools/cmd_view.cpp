@@ -201,6 +201,7 @@ int view(Args& args) {
     std::vector<std::string> triangle_only;
     if (collisions_given) triangle_only.push_back("--collisions");
     if (sa.view) triangle_only.push_back("--view");
+    if (sa.load.allow_intersecting) triangle_only.push_back("--allow-intersecting");
     refuse_triangle_flags("view", triangle_only);
     return view_segments(sa, scene_text, *out, o);
   }

@@ -36,9 +36,7 @@ std::vector<Planned> plan(const Recorded_run& run, int sampled) {
   const mpq_class within = (end > start ? end - start : mpq_class(1)) / 1000;
   for (std::size_t k = 0; k < batches.size(); ++k) {
     const Interval& after = spans[k + 1];
-    const mpq_class t = after.to ? just_after(after.from, *after.to, within)
-                                 : just_after(after.from, Exact_time(after.from.upper() + within), within);
-    out.push_back({t, k});
+    out.push_back({drawn_after(after.from, after.to, run.sim.limit, within), k});
   }
   std::stable_sort(out.begin(), out.end(), [](const Planned& a, const Planned& b) { return a.time < b.time; });
   return out;
@@ -122,6 +120,14 @@ mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& 
   while (!a.is_rational() && a.upper() - a.lower() > within / 2) a.refine();
   const mpq_class t = (a.is_rational() ? a.rational() : a.upper()) + within / 2;
   return Exact_kernel().compare(Exact_time(t), b) < 0 ? t : kinetic::rational_between(a, b);
+}
+
+mpq_class drawn_after(const Exact_time& a, const std::optional<Exact_time>& b, const std::optional<mpq_class>& end,
+                      const mpq_class& within) {
+  if (b) return just_after(a, *b, within);
+  if (!end) return just_after(a, Exact_time(a.upper() + within), within);
+  if (Exact_kernel().compare(a, Exact_time(*end)) >= 0) return *end;
+  return just_after(a, Exact_time(*end), within);
 }
 
 std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& o,

@@ -35,6 +35,13 @@ struct Animation_frame {
 // the frame held after a batch at a, before the next failure at b.
 mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& within);
 
+// The instant drawn for the interval after a batch at a, up to the next
+// failure b (none: the run has none left), never past `end` (the time
+// limit, if any). A batch at `end` itself is drawn there: the tree at an
+// instant is the one in force just after it.
+mpq_class drawn_after(const Exact_time& a, const std::optional<Exact_time>& b, const std::optional<mpq_class>& end,
+                      const mpq_class& within);
+
 // The frames in time order, framed together so that the camera stays still.
 // Calls progress(done, of) after each frame.
 std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& options,

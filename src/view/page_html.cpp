@@ -29,9 +29,12 @@ void replace(std::string& s, const std::string& marker, const std::string& with)
   s.replace(at, marker.size(), with);
 }
 
-// Inside <script> the text "</" could end the element: JSON may write it "<\/".
+// Inside <script> the text "</" could end the element, and "<!--" would
+// let a later "<script" hide its end: JSON may write them "<\/" and
+// "\u003c!--" (in JSON, '<' is only ever inside a string).
 std::string script_safe(std::string s) {
   for (std::size_t at = 0; (at = s.find("</", at)) != std::string::npos; at += 3) s.replace(at, 2, "<\\/");
+  for (std::size_t at = 0; (at = s.find("<!--", at)) != std::string::npos; at += 9) s.replace(at, 1, "\\u003c");
   return s;
 }
 

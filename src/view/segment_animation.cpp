@@ -71,8 +71,8 @@ Segment_film segment_film(const segments::Segment_scene& s, const Segment_film_o
   const mpq_class within = (end > s.start ? end - s.start : mpq_class(1)) / 1000;
   for (std::size_t b = 0; b < batches.size(); ++b) {
     const Exact_time& at = batches[b].time;
-    const Exact_time to = b + 1 < batches.size() ? batches[b + 1].time : next ? *next : Exact_time(at.upper() + within);
-    plan.push_back({just_after(at, to, within), b});
+    const std::optional<Exact_time> to = b + 1 < batches.size() ? std::optional(batches[b + 1].time) : next;
+    plan.push_back({drawn_after(at, to, limit, within), b});
   }
   if (plan.empty()) plan.push_back({s.start, {}});
   std::stable_sort(plan.begin(), plan.end(), [](const Planned& a, const Planned& b) { return a.time < b.time; });

@@ -54,7 +54,7 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   const mpq_class within = (s.end ? *s.end - s.start : mpq_class(1)) / 1000;
   // The instant drawn for the interval from `from` to the next failure.
   const auto inside = [&](const Exact_time& from, const std::optional<Exact_time>& to) {
-    return just_after(from, to ? *to : Exact_time(from.upper() + within), within);
+    return drawn_after(from, to, s.end, within);
   };
   std::vector<Run::Batch> batches;
   std::vector<Run_interval> intervals;

@@ -38,7 +38,8 @@ struct Segment_svg_options {
   std::optional<View_box> box;     // the region drawn; view_box(scene, t) by default
   std::vector<std::string> notes;  // caption lines after the scene's name and the counts; "" keeps a line free
   // Segments drawn once more on top, with the class "marked" (which
-  // segment_svg_style() leaves to the document to style).
+  // segment_svg_style() leaves to the document to style) and their number
+  // as data-segment.
   std::vector<std::size_t> marked;
 };
 
