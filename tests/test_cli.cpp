@@ -869,8 +869,9 @@ TEST_CASE("kvd bench aeg-cost counts an event's cost of both segment runs, or wr
   CHECK(run("bench aeg-cost --help").out.find("usage: kvd bench aeg-cost") != std::string::npos);
   CHECK(run("bench aeg-cost --sizes 0" + to).status == 2);
   CHECK(run("bench aeg-cost --events x" + to).status == 2);
+  CHECK(run("bench aeg-cost --flip-sizes 1,x" + to).status == 2);
   CHECK(!std::ifstream(out + "/aeg-cost.md").good());
-  REQUIRE(run("bench aeg-cost --sizes 20,10 --events 40" + to).status == 0);
+  REQUIRE(run("bench aeg-cost --sizes 20,10 --flip-sizes 30 --events 400" + to).status == 0);
   std::ifstream f(out + "/aeg-cost.md");
   const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   CHECK(md.find("| 10 | 10 | ") < md.find("| 20 | 20 | "));
@@ -879,7 +880,7 @@ TEST_CASE("kvd bench aeg-cost counts an event's cost of both segment runs, or wr
   std::getline(c, header);
   std::vector<std::string> names;
   for (std::stringstream hs(header); std::getline(hs, line, ',');) names.push_back(line);
-  std::map<std::string, std::map<std::string, std::string>> rows;  // by run, n and m
+  std::map<std::string, std::map<std::string, std::string>> rows;  // by family, run, n and m
   while (std::getline(c, line)) {
     std::map<std::string, std::string> v;
     std::stringstream ls(line);
@@ -888,12 +889,23 @@ TEST_CASE("kvd bench aeg-cost counts an event's cost of both segment runs, or wr
     CHECK(std::stoul(v["batches"]) > 0);
     CHECK(std::stod(v["signs_median"]) <= std::stod(v["signs_max"]));
     CHECK(std::stod(v["nodes_made_median"]) <= std::stod(v["nodes_made_max"]));
-    rows[v["run"] + " " + v["n"] + " " + v["m"]] = v;
+    CHECK(std::stoul(v["flips_in_place"]) <= std::stoul(v["lone_flips"]));
+    CHECK(std::stod(v["flip_nodes_median"]) <= std::stod(v["flip_nodes_max"]));
+    CHECK(std::stod(v["flip_signs_median"]) <= std::stod(v["flip_signs_max"]));
+    rows[v["family"] + " " + v["run"] + " " + v["n"] + " " + v["m"]] = v;
   }
-  CHECK(rows.size() == 8);  // two runs of n = 10 and 20, all and half moving
+  CHECK(rows.size() == 10);  // two runs of n = 10 and 20, all and half moving, and of 30 rotating
+  // Rotating segments flip; random ones start with none vertical and do not turn.
+  auto& rotating = rows["rotating paper 30 30"];
+  CHECK(std::stoul(rotating["lone_flips"]) > 0);
+  CHECK(std::stoul(rows["rotating local 30 30"]["lone_flips"]) > 0);
+  CHECK(std::stod(rotating["flip_nodes_median"]) > 0);
+  CHECK(md.find("| 30 | " + rotating["k"] + " | " + rotating["nodes"] + " | the paper's set | ") != std::string::npos);
   for (const char* scene : {"10 10", "10 5", "20 20", "20 10"}) {
-    auto& local = rows[std::string("local ") + scene];
-    auto& paper = rows[std::string("paper ") + scene];
+    auto& local = rows[std::string("random local ") + scene];
+    auto& paper = rows[std::string("random paper ") + scene];
+    CHECK(local["lone_flips"] == "0");
+    CHECK(paper["lone_flips"] == "0");
     INFO(scene);
     // One scene, one tree at the start; the paper's set holds no sign of
     // the construction, the kept one reads the signs it holds.

@@ -14,6 +14,7 @@ namespace kvd::bench::aeg_cost_suite {
 // One run over the first failures of one scene: its cost per batch in
 // signs decided, nodes made and time.
 struct Run_row {
+  std::string family = "random";  // the scenes': "random" (no flips) or "rotating" (flips)
   std::string run;  // "local": the kept set's local update; "paper": the run on the paper's certificates
   std::size_t n = 0, m = 0, k = 0;  // segments, moving ones, crossings at the start
   std::size_t nodes = 0;            // the tree's at the start
@@ -32,10 +33,18 @@ struct Run_row {
   std::array<double, segments::Aeg_phases::count> phase_means{};  // in the order of Aeg_phases::named
   double other_guard_max = 0;
   double mean_ms = 0, median_ms = 0, max_ms = 0;
+  // The batches of one flip (in the paper's set, with the transient cells
+  // it closes): their count, those turned in place (the paper's set only),
+  // and per batch the nodes made again or edited in place, the signs
+  // decided, the time.
+  std::size_t lone_flips = 0, flips_in_place = 0;
+  double flip_nodes_median = 0, flip_nodes_max = 0, flip_signs_median = 0, flip_signs_max = 0, flip_median_ms = 0;
 };
 
 struct Config {
   std::vector<std::size_t> sizes{100, 200, 400, 800, 1600, 3200, 6400, 12800};
+  // The rotating scenes' (all moving), for the cost of a flip.
+  std::vector<std::size_t> flip_sizes{25, 50, 100, 200, 400, 800, 1600};
   std::size_t events = 2000;
   std::string out = "bench-out";
 };

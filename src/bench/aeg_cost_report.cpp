@@ -12,7 +12,7 @@ namespace {
 
 const Run_row* find(const std::vector<Run_row>& rows, const std::string& run, std::size_t n, std::size_t m) {
   for (const Run_row& r : rows)
-    if (r.run == run && r.n == n && r.m == m) return &r;
+    if (r.family == "random" && r.run == run && r.n == n && r.m == m) return &r;
   return nullptr;
 }
 
@@ -37,7 +37,7 @@ std::string phases_table(const std::vector<Run_row>& rows) {
       "leaves | walls renamed | the rest | other steps' guard: max |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Run_row& r : rows)
-    if (r.phased) {
+    if (r.phased && r.family == "random") {
       double rest = r.signs_mean;
       out += "| " + std::to_string(r.n) + " | " + std::to_string(r.m) + " | " + cli::fixed(r.signs_mean, 1) + " | ";
       for (const double v : r.phase_means) {
@@ -55,7 +55,7 @@ std::string table(const std::vector<Run_row>& rows, const std::string& run) {
       "mean | signs repeated: mean | nodes made: mean | median | max | ms: mean | median | max |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Run_row& r : rows)
-    if (r.run == run)
+    if (r.run == run && r.family == "random")
       out += "| " + std::to_string(r.n) + " | " + std::to_string(r.m) + " | " + std::to_string(r.k) + " | " +
              std::to_string(r.nodes) + " | " + std::to_string(r.batches) + " | " + cli::fixed(r.signs_mean, 1) +
              " | " + cli::fixed(r.signs_median, 1) + " | " + cli::fixed(r.signs_p90, 0) + " | " +
@@ -67,23 +67,45 @@ std::string table(const std::vector<Run_row>& rows, const std::string& run) {
   return out;
 }
 
+// The cost of a batch of one flip, on the rotating scenes.
+std::string flips_table(const std::vector<Run_row>& rows) {
+  std::string out =
+      "| n | k | tree nodes | run | batches | batches of one flip | turned in place | nodes made or edited: median | max | "
+      "signs decided: median | max | ms: median |\n"
+      "|---:|---:|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Run_row& r : rows)
+    if (r.family == "rotating")
+      out += "| " + std::to_string(r.n) + " | " + std::to_string(r.k) + " | " + std::to_string(r.nodes) + " | " +
+             (r.run == "paper" ? "the paper's set" : "kept set, local update") + " | " + std::to_string(r.batches) +
+             " | " + std::to_string(r.lone_flips) + " | " + (r.phased ? std::to_string(r.flips_in_place) : "") +
+             " | " + cli::fixed(r.flip_nodes_median, 1) + " | " + cli::fixed(r.flip_nodes_max, 0) + " | " +
+             cli::fixed(r.flip_signs_median, 1) + " | " + cli::fixed(r.flip_signs_max, 0) + " | " +
+             cli::fixed(r.flip_median_ms, 3) + " |\n";
+  return out;
+}
+
 }  // namespace
 
 std::string csv(const std::vector<Run_row>& rows) {
   std::string out =
-      "run,n,m,k,nodes,batches,failures,signs_median,signs_mean,signs_p90,signs_max,held_mean,repeated_mean,"
+      "family,run,n,m,k,nodes,batches,failures,signs_median,signs_mean,signs_p90,signs_max,held_mean,repeated_mean,"
       "nodes_made_median,"
       "nodes_made_mean,nodes_made_max,";
   for (const auto& [name, signs] : segments::Aeg_phases{}.named()) out += std::string(name) + "_mean,";
-  out += "other_guard_max,mean_ms,median_ms,max_ms\n";
+  out += "other_guard_max,lone_flips,flips_in_place,flip_nodes_median,flip_nodes_max,flip_signs_median,"
+         "flip_signs_max,mean_ms,median_ms,max_ms,flip_median_ms\n";
   for (const Run_row& r : rows)
-    out += r.run + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," + std::to_string(r.k) + "," +
+    out += r.family + "," + r.run + "," + std::to_string(r.n) + "," + std::to_string(r.m) + "," + std::to_string(r.k) + "," +
            std::to_string(r.nodes) + "," + std::to_string(r.batches) + "," + std::to_string(r.failures) + "," +
            cli::approx(r.signs_median) + "," + cli::fixed(r.signs_mean, 3) + "," + cli::approx(r.signs_p90) + "," +
            cli::approx(r.signs_max) + "," + cli::fixed(r.held_mean, 3) + "," + cli::fixed(r.repeated_mean, 3) + "," +
            cli::approx(r.nodes_made_median) +
            "," + cli::fixed(r.nodes_made_mean, 3) + "," + cli::approx(r.nodes_made_max) + "," + phases_csv(r) +
-           cli::fixed(r.mean_ms, 4) + "," + cli::fixed(r.median_ms, 4) + "," + cli::fixed(r.max_ms, 3) + "\n";
+           std::to_string(r.lone_flips) + "," + std::to_string(r.flips_in_place) + "," +
+           cli::approx(r.flip_nodes_median) + "," + cli::approx(r.flip_nodes_max) + "," +
+           cli::approx(r.flip_signs_median) + "," + cli::approx(r.flip_signs_max) + "," + cli::fixed(r.mean_ms, 4) +
+           "," + cli::fixed(r.median_ms, 4) + "," + cli::fixed(r.max_ms, 3) + "," + cli::fixed(r.flip_median_ms, 4) +
+           "\n";
   return out;
 }
 
@@ -116,7 +138,15 @@ std::string markdown(const Config& c, const std::vector<Run_row>& rows, bool plo
       "at the instant, and made), the endpoints' leaves found again, the checks that an old subtree keeps its "
       "signs with a moved wall renamed; the rest made the cuts again and checked flips and collinear "
       "endpoints.\n\n" +
-      phases_table(rows);
+      phases_table(rows) +
+      "\n## Flips\n\n"
+      "`kvd generate segments-rotating --n N --seed 1`: every segment turns about its midpoint, so that segments "
+      "turn through vertical. Both runs, up to the same failure number; per batch of one flip (in the paper's set, "
+      "with the transient cells between the segment's points, which close as it turns vertical), "
+      "the nodes the update made again or, for a flip the paper's set turned in place (its section 3.1.4), "
+      "edited in place, the signs it decided, its time. Neither run keeps the paper's augmented BSP, under which a "
+      "flip would change no node: this is what a flip costs on the plain tree.\n\n" +
+      flips_table(rows);
   if (plotted)
     out += "\n## Plot\n\nAbove, the mean signs per batch against n (log scales: a straight line is a power of n); "
            "below, the mean nodes made per batch (log scale in n only: a straight line is growth in log n).\n\n"

@@ -7,7 +7,7 @@ Usage: reproduce.py KVD SOURCE_DIR WORK_DIR
 Re-runs the small cases (the whole accuracy suite, the thesis suite at 25
 triangles, the update suite at 100 triangles, the cost suite at 25, the aeg
 suite at 100 segments (and its rotating scenes, the long one at 30), the
-aeg-cost suite at 100, 200 and 400 segments, and kvd_bench_next_root as
+aeg-cost suite at 100, 200 and 400 segments (and 25, 50 and 100 rotating), and kvd_bench_next_root as
 committed when it is built beside kvd), compares each fresh CSV row with the
 committed row of the same key, number by number, and runs splice.py --check.
 Timing quantities differ from run to run and machine to machine and are
@@ -71,8 +71,10 @@ def main():
     run([kvd, "bench", "aeg", "--sizes", "100", "--kinetic-sizes", "100", "--kinetic-quadratic-up-to", "100",
          "--rotating-long", "30", "--rebuild-up-to", "0", "--repeats", "1", "--out", str(work / "aeg")])
     problems += compare("aeg.csv", bench / "aeg.csv", work / "aeg" / "aeg.csv", ["part", "family", "crossings", "n", "m"])
-    run([kvd, "bench", "aeg-cost", "--sizes", "100,200,400", "--out", str(work / "aeg-cost")])
-    problems += compare("aeg-cost.csv", bench / "aeg-cost.csv", work / "aeg-cost" / "aeg-cost.csv", ["run", "n", "m"])
+    run([kvd, "bench", "aeg-cost", "--sizes", "100,200,400", "--flip-sizes", "25,50,100", "--out",
+         str(work / "aeg-cost")])
+    problems += compare("aeg-cost.csv", bench / "aeg-cost.csv", work / "aeg-cost" / "aeg-cost.csv",
+                        ["family", "run", "n", "m"])
     next_root = pathlib.Path(kvd).parent / "kvd_bench_next_root"
     if next_root.exists():
         (work / "next-root").mkdir(parents=True, exist_ok=True)
