@@ -9,8 +9,15 @@ polynomials over QQ; no floating point.
 
 import json
 import re
+import sys
 from fractions import Fraction
 from math import gcd
+
+# Python 3.11 refuses to convert integers of more than 4,300 digits to and
+# from text by default; the formats allow numbers of 10,001 digits, and
+# their products in a certificate have more.
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)
 
 
 class Invalid(Exception):

@@ -393,3 +393,25 @@ TEST_CASE("a double run adopts a fresh build where validation finds its tree sta
   CHECK(exact.tree().text() == fp.tree().text());
   CHECK(exact.recovery().detected() == 0);
 }
+
+// An epsilon that swamps the scene's numbers leaves the perturbation no
+// coefficient to decide by: in floating point that is the kernel's failure,
+// which the run reports as stuck where it started (not an internal error,
+// and not at the last instant it tried to build again at).
+TEST_CASE("a double run whose epsilon swamps the scene is stuck at its start", "[segments][kinetic][float]") {
+  Segment_scene s;
+  s.name = "one";
+  s.end = mpq_class(10);
+  s.segments.push_back({"", {{{0, 0, 1}, {1, 1, 1}}}, {}});
+  s.derive();
+  const Double_kernel k(2.0);
+  Kinetic_segment_bsp<Double_kernel> fp(k, s, false);
+  CHECK(fp.stuck());
+  CHECK(fp.recovery().failed_builds == 1);
+  CHECK(k.to_double(fp.now()) == 0);
+  CHECK_FALSE(fp.next_event_time());
+  const Segment_predicates<Double_kernel> pred(k, s);
+  CHECK_THROWS_AS(build_cylindrical_bsp(pred, k.time(0.0)), Bsp_contradiction);
+  // The exact run of the same scene has its tree.
+  CHECK(Kinetic_segment_bsp<Exact_kernel>(Exact_kernel(), s, false).tree().text() == "(V s0.0 . (V s0.1 (E s0 . .) .))");
+}

@@ -57,6 +57,7 @@ bool Kinetic_segment_bsp<K>::guarded(F f) {
       }
     }
     ++recovery_.unrepaired;
+    now_ = base;     // where it got stuck, not the last instant tried
     queue_.clear();  // the run stops here
     return true;
   }

@@ -10,6 +10,7 @@
 #include "segment_filter.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/segments/cylindrical_bsp.hpp"
 
 namespace kvd::segments {
 
@@ -212,7 +213,15 @@ Segment_sign Segment_predicates<K>::decide_by_rules(const Segment_certificate_ke
       if (recorder_ && c.degree() > 0) deciding.push_back(c);
       break;
     }
-    if (s == 0) throw std::logic_error("segment predicate: every ε-coefficient vanishes (see proofs/segment-perturbation.md)");
+    if (s == 0) {
+      // Proved impossible in exact arithmetic; in floating point, the
+      // kernel's epsilon swamped the coefficients, which its run repairs or
+      // reports as a contradiction.
+      if constexpr (std::is_same_v<K, Exact_kernel>)
+        throw std::logic_error("segment predicate: every ε-coefficient vanishes (see proofs/segment-perturbation.md)");
+      else
+        throw Bsp_contradiction("segment predicate: every ε-coefficient is within the kernel's epsilon of 0");
+    }
     rule = Segment_rule::perturbation;
     sign *= s;
   }

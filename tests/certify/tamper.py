@@ -60,6 +60,11 @@ import sys
 from fractions import Fraction
 from math import gcd
 
+# Certificates may hold integers of more than the 4,300 digits Python 3.11
+# converts by default (proofs/certificate_common.py).
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)
+
 class NotApplicable(Exception):
     pass
 
