@@ -696,11 +696,20 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
     CHECK(r.out.find(flag.substr(0, flag.find(' '))) != std::string::npos);
   }
   CHECK(!std::ifstream(page).good());
-  // A segment scene's page (its contents: test_segment_page).
+  // --scene names a trace's scene, not a scene's.
+  const Run given = run("view " + scene + " --scene " + scene + " --out " + page, "2>&1");
+  CHECK(given.status == 2);
+  CHECK(given.out.find("--scene is for a trace") != std::string::npos);
+  CHECK(!std::ifstream(page).good());
+  // A segment scene's page (its contents: test_segment_page), from a file
+  // and from standard input, read once.
   const Run viewed = run("view " + scene + " --out " + page);
   CHECK(viewed.status == 0);
   CHECK(viewed.out.find("kvd view: 1 batches, 1 events; wrote " + page) != std::string::npos);
   CHECK(std::ifstream(page).good());
+  const Run piped = run("view - --out " + page + " < " + scene);
+  CHECK(piped.status == 0);
+  CHECK(piped.out.find("kvd view: 1 batches, 1 events; wrote " + page) != std::string::npos);
   const Run flag = run("diff " + scene + " --kernel double --allow-intersecting", "2>&1");
   CHECK(flag.status == 2);
   CHECK(flag.out.find("--allow-intersecting: only for triangle scenes") != std::string::npos);
@@ -805,6 +814,18 @@ TEST_CASE("kvd animate films a segment scene's run, a held frame after each batc
   CHECK(occurrences(film, "data-batch=\"0\"") == 1);
   CHECK(film.find("after batch 1 of 1 (t = 3): edge event") != std::string::npos);
   CHECK(occurrences(film, "<style>") == 1);
+}
+
+TEST_CASE("kvd animate films only the start of a run stopped for its events before any batch", "[cli][animate]") {
+  const std::string out = std::string(KVD_BINARY_DIR) + "/no-events-film.svg";
+  for (const char* scene : {"segments/over-endpoint", "two-triangles"}) {
+    INFO(scene);
+    std::remove(out.c_str());
+    const Run none = run("animate " + std::string(KVD_SOURCE_DIR) + "/data/" + scene + ".json --frames 4 --events 0 -o " + out);
+    CHECK(none.status == 0);
+    CHECK(none.out.find("0 batches, 0 events, 1 pictures in 1 frames") != std::string::npos);
+    CHECK(std::ifstream(out).good());
+  }
 }
 
 TEST_CASE("kvd bench aeg measures the BSP of segments against seed 003's bounds, or writes nothing on bad input",

@@ -193,7 +193,10 @@ int view(Args& args) {
     listed = trace;
   }
   if (listed) o.max_events = listed->size();
-  const std::string scene_text = sa.read_text("view");
+  else if (scene_of_trace)
+    throw Usage_error("kvd view: --scene is for a trace; " + scene::input_name(input) + " is a scene");
+  // The input is read once: standard input cannot be read again.
+  const std::string scene_text = listed ? sa.read_text("view") : text;
   if (segments::scene_format(scene_text) == "kvd-segments/1") {
     if (listed)
       throw Usage_error("kvd view: " + input + ": a report or trace is read with a triangle scene only; " + *sa.path +

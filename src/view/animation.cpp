@@ -23,13 +23,16 @@ struct Planned {
 };
 
 // Sampled instants over [start, end] and one just after each batch, in time
-// order. `end` is the limit when the run went on to it, else its last batch.
+// order. `end` is the limit when the run went on to it, else its last batch
+// (the start when it stopped for its events before any; a second on when it
+// ran out of events with no limit).
 std::vector<Planned> plan(const Recorded_run& run, int sampled) {
   const auto& batches = run.sim.batches;
   const mpq_class start = run.scene.start;
   const auto spans = intervals(run);
-  mpq_class end = start + 1;
-  if (run.sim.stopped != kinetic::Stop::events && run.sim.limit) end = *run.sim.limit;
+  const bool for_events = run.sim.stopped == kinetic::Stop::events;
+  mpq_class end = for_events ? start : start + 1;
+  if (!for_events && run.sim.limit) end = *run.sim.limit;
   else if (!batches.empty()) end = batches.back().time.is_rational() ? batches.back().time.rational() : batches.back().time.lower();
   std::vector<Planned> out;
   for (int i = 0; i < sampled && end > start; ++i) out.push_back({start + (end - start) * (2 * i + 1) / (2 * sampled), {}});
@@ -38,6 +41,7 @@ std::vector<Planned> plan(const Recorded_run& run, int sampled) {
     const Interval& after = spans[k + 1];
     out.push_back({drawn_after(after.from, after.to, run.sim.limit, within), k});
   }
+  if (out.empty()) out.push_back({start, {}});
   std::stable_sort(out.begin(), out.end(), [](const Planned& a, const Planned& b) { return a.time < b.time; });
   return out;
 }

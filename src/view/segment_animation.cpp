@@ -60,9 +60,11 @@ Segment_film segment_film(const segments::Segment_scene& s, const Segment_film_o
   }
   film.batches = batches.size();
 
-  // The film runs to the time limit when the run reached it, else to its last batch.
+  // The film runs to the time limit when the run reached it, else to its
+  // last batch (the start when it stopped for its events before any; a
+  // second on when it ran out of events with no limit).
   const std::optional<mpq_class> limit = o.until ? o.until : s.end;
-  mpq_class end = s.start + 1;
+  mpq_class end = reached_limit ? s.start + 1 : s.start;
   if (reached_limit && limit) end = *limit;
   else if (!batches.empty()) end = batches.back().time.lower();  // the time itself when rational
   std::vector<Planned> plan;
