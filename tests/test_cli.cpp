@@ -575,6 +575,16 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
   }
   CHECK(run("simulate " + dir + "over-endpoint.json --list").out.find("t = 3 (3): 1 failing, 1 edge, tree changed") !=
         std::string::npos);
+  // The time reached, as for triangle scenes: the span's end (7/2) or
+  // --until when no failure is left before it, else the last batch's.
+  for (const char* set : {"kept", "paper"}) {
+    const std::string sim = "simulate " + dir + "over-endpoint.json --json --certificates " + set;
+    CHECK(run(sim).out.find("\"time_reached_exact\": \"7/2\"") != std::string::npos);
+    const std::string until = run(sim + " --until 1").out;
+    CHECK(until.find("\"stopped\": \"limit\"") != std::string::npos);
+    CHECK(until.find("\"time_reached_exact\": \"1\"") != std::string::npos);
+    CHECK(run(sim + " --events 0").out.find("\"time_reached_exact\": \"0\"") != std::string::npos);
+  }
   CHECK(run("simulate " + dir + "turning-vertical.json --json").out.find("\"flip\": 1") != std::string::npos);
   // The three updates: the same batches; the local one counts its frontier
   // replays, the subtree one none.

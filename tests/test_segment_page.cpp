@@ -84,6 +84,11 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
                               : until && k.compare(*next, Exact_time(*until)) > 0 ? "limit"
                                                                                   : "events";
   CHECK(data.at("stopped") == stopped);
+  // The time reached: the limit (the earlier of the end and --until) when
+  // the page stopped there or ran out of failures, else the last batch's.
+  std::optional<mpq_class> limit = s.end;
+  if (until && (!limit || *until < *limit)) limit = until;
+  CHECK(data.at("time_reached") == k.to_string(stopped != "events" && limit ? Exact_time(*limit) : run.now()));
   if (stopped == "events") {
     CHECK(failures >= max_events);
     if (!batches.empty()) CHECK(failures - batches.back().at("failing").size() < max_events);

@@ -40,10 +40,14 @@ int segment_simulate(const Scene_args& sa, const std::string& text, const Segmen
 int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& s, const Segment_run_options& o);
 
 // How run_batches stopped ("limit", "events" or "exhausted"), after how
-// many batches and certificate failures.
+// many batches and certificate failures, and the time reached: the last
+// batch's, or the limit (the earlier of the scene's end and --until) when
+// the run stopped there or ran out of failures before it.
+template <class Time>
 struct Batches_run {
   std::string stopped;
   std::size_t batches = 0, failures = 0;
+  Time time_reached;
 };
 
 // Advances `run` (a kinetic segment BSP of kernel k) batch by batch up to
@@ -51,18 +55,21 @@ struct Batches_run {
 // batch to take(batch) (a run's batches are not kept: their record would
 // grow with the run), with progress on stderr.
 template <class Run, class K, class Take>
-Batches_run run_batches(Run& run, const K& k, const Segment_run_options& o, Take take) {
+Batches_run<typename K::Time> run_batches(Run& run, const K& k, const Segment_run_options& o, Take take) {
   const auto progress = progress_every_few_seconds("kvd simulate");
-  std::optional<typename K::Time> until;
-  if (o.until) until = k.time(from_rational<typename K::FT>(*o.until));
-  Batches_run r;
+  std::optional<mpq_class> limit = run.scene().end;
+  if (o.until && (!limit || *o.until < *limit)) limit = o.until;
+  const auto at_limit = [&](Batches_run<typename K::Time>& r, const char* why) {
+    r.stopped = why;
+    r.time_reached = limit ? k.time(from_rational<typename K::FT>(*limit)) : run.now();
+    return r;
+  };
+  Batches_run<typename K::Time> r;
   while (const auto next = run.next_event_time()) {
-    if (until && k.compare(*next, *until) > 0) {
-      r.stopped = "limit";
-      return r;
-    }
+    if (o.until && k.compare(*next, k.time(from_rational<typename K::FT>(*o.until))) > 0) return at_limit(r, "limit");
     if (r.failures >= o.max_events) {
       r.stopped = "events";
+      r.time_reached = run.now();
       return r;
     }
     typename Run::Batch b = run.advance();
@@ -70,8 +77,7 @@ Batches_run run_batches(Run& run, const K& k, const Segment_run_options& o, Take
     take(std::move(b));
     progress(++r.batches, r.failures);
   }
-  r.stopped = "exhausted";
-  return r;
+  return at_limit(r, "exhausted");
 }
 
 struct Segment_certify_options {

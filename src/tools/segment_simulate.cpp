@@ -24,7 +24,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
   std::array<std::size_t, 4> events{}, changed_by{};
   std::size_t changed = 0, simultaneous = 0, frontier = 0, subtree = 0;
   std::vector<double> ms, rebuilt, signs;
-  auto [stopped, batches, failures] = run_batches(kin, k, o, [&](typename Kinetic::Batch&& b) {
+  auto [stopped, batches, failures, reached] = run_batches(kin, k, o, [&](typename Kinetic::Batch&& b) {
     signs.push_back(static_cast<double>(b.signs));
     frontier += b.frontier_replays;
     subtree += b.subtree_replays;
@@ -38,7 +38,10 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
     ms.push_back(b.update_seconds * 1e3);
     if (o.list) listed.push_back(std::move(b));
   });
-  if (kin.stuck()) stopped = "stuck";
+  if (kin.stuck()) {
+    stopped = "stuck";
+    reached = kin.now();
+  }
   const segments::Bsp_counts c = kin.tree().counts();
   const double mean = ms.empty() ? 0 : std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
   const double max = ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end());
@@ -67,7 +70,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               {"failures_by_event", by_kind}, {"changed_batches_by_event", changing}, {"stopped", stopped},
               {"validation", o.validate ? "every" : "none"}, {"validations", kin.validations()},
               {"validation_failures", kin.validation_failures().size()},
-              {"time_reached_exact", k.to_string(kin.now())}, {"time_reached", approx(k.to_double(kin.now()))},
+              {"time_reached_exact", k.to_string(reached)}, {"time_reached", approx(k.to_double(reached))},
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", kin.certificates()},
               {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
                              {"max", decimal(fixed(max, 3))}}},
@@ -91,7 +94,7 @@ int run(const K& k, const Scene_args& sa, const segments::Segment_scene& s, cons
               << " simultaneous)\nfailures:      " << failures << " (";
     for (std::size_t e = 0; e < 4; ++e)
       std::cout << (e ? ", " : "") << events[e] << " " << segments::segment_event_names[e];
-    std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(kin.now())
+    std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(reached)
               << "\nvalidations:   " << kin.validations() << " (" << kin.validation_failures().size() << " failed)"
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << kin.certificates()
               << " certificates\nupdate (ms):   mean " << fixed(mean, 3) << ", median " << fixed(median(ms), 3)

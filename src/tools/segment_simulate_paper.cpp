@@ -39,7 +39,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
   std::size_t replays = 0, frontier = 0, flipped = 0;
   std::array<std::size_t, 3> by_kind{};
   std::vector<double> ms, made, certified, signs;
-  const auto [stopped, batches, failures] = run_batches(run, k, o, [&](Run::Batch&& b) {
+  const auto [stopped, batches, failures, reached] = run_batches(run, k, o, [&](Run::Batch&& b) {
     signs.push_back(static_cast<double>(b.signs));
     changed += b.changed;
     simultaneous += b.failing.size() > 1;
@@ -67,7 +67,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               {"changed_batches", changed}, {"simultaneous_batches", simultaneous}, {"stopped", stopped},
               {"validation", o.validate ? "every" : "none"}, {"validations", run.validations()},
               {"validation_failures", run.validation_failures().size()},
-              {"time_reached_exact", k.to_string(run.now())}, {"time_reached", approx(k.to_double(run.now()))},
+              {"time_reached_exact", k.to_string(reached)}, {"time_reached", approx(k.to_double(reached))},
               {"nodes", c.nodes}, {"height", c.height}, {"certificates", run.certificates()},
               {"update_ms", {{"mean", decimal(fixed(mean, 3))}, {"median", decimal(fixed(median(ms), 3))},
                              {"max", decimal(fixed(max, 3))}}},
@@ -105,7 +105,7 @@ int segment_simulate_paper(const Scene_args& sa, const segments::Segment_scene& 
               << "\nbatches:       " << batches << " (" << changed << " changed the tree, " << simultaneous
               << " simultaneous)\nfailures:      " << failures << " (";
     for (std::size_t i = 0; i < 3; ++i) std::cout << (i ? ", " : "") << by_kind[i] << " " << kind_text(Aeg_certificate_kind(i));
-    std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(run.now())
+    std::cout << ")\nstopped:       " << stopped << " at t = " << k.to_string(reached)
               << "\nvalidations:   " << run.validations() << " (" << run.validation_failures().size() << " failed)"
               << "\ntree:          " << c.nodes << " nodes, height " << c.height << ", " << run.certificates()
               << " certificates\nupdate (ms):   mean " << fixed(mean, 3) << ", median " << fixed(median(ms), 3)

@@ -109,6 +109,12 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   }
   nlohmann::json list = nlohmann::json::array();
   for (const auto& b : batches) list.push_back(batch_json(k, b));
+  // The time reached: the last batch's, or the limit (the earlier of the
+  // scene's end and --until) when the page stopped there or ran out of
+  // failures before it, as kvd simulate says.
+  std::optional<mpq_class> limit = s.end;
+  if (o.until && (!limit || *o.until < *limit)) limit = o.until;
+  const Exact_time reached = stopped != "events" && limit ? Exact_time(*limit) : run.now();
   return {{"format", "kvd-segment-view/1"},
           {"title", title},
           {"scene", s.name},
@@ -116,8 +122,8 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
           {"start", s.start.get_str()},
           {"failures", failures},
           {"stopped", stopped},
-          {"time_reached", k.to_string(run.now())},
-          {"time_reached_approx", approx(k.to_double(run.now()))},
+          {"time_reached", k.to_string(reached)},
+          {"time_reached_approx", approx(k.to_double(reached))},
           {"width", width},
           {"height", height},
           {"style", segments::segment_svg_style()},
