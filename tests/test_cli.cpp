@@ -517,6 +517,10 @@ TEST_CASE("kvd info tells segment scenes by their format and counts them exactly
   const Run message = run("info " + bad, "2>&1 >/dev/null");
   CHECK(message.out.find(bad + ": /segments/1: the segment has zero length") != std::string::npos);
   CHECK(run("info " + bad + " --json", "2>&1 >/dev/null").out.find(bad + ": /segments/1: ") != std::string::npos);
+  // A triangle scene's flag is refused, not ignored.
+  const Run flag = run("info " + dir + "two-crossing.json --allow-intersecting", "2>&1");
+  CHECK(flag.status == 2);
+  CHECK(flag.out.find("--allow-intersecting: only for triangle scenes") != std::string::npos);
 }
 
 TEST_CASE("kvd generate writes segment scenes that kvd info reads back", "[cli][generate][segments]") {
@@ -542,6 +546,13 @@ TEST_CASE("kvd generate writes segment scenes that kvd info reads back", "[cli][
   CHECK(run("generate segments-rotating --motion linear").status == 2);
   CHECK(run("generate segments-random --length 2").status == 2);
   CHECK(run("generate segments-spiral").status == 2);
+  // Each kind of family refuses the other kind's options rather than ignore them.
+  const Run triangles = run("generate segments-random --n 5 --triangles 5 --degree 2", "2>&1");
+  CHECK(triangles.status == 2);
+  CHECK(triangles.out.find("--triangles, --degree: only for the triangle families") != std::string::npos);
+  const Run segments = run("generate uniform-density --triangles 5 --n 5 --end 2", "2>&1");
+  CHECK(segments.status == 2);
+  CHECK(segments.out.find("--n, --end: only for the segments-* families") != std::string::npos);
 }
 
 TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene", "[cli][build][simulate][segments]") {
@@ -560,6 +571,7 @@ TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene
   CHECK(run(flip + "1/2 --tree").out != run(flip + "3/2 --tree").out);
   CHECK(run(flip + "1/2 --augmented").out == "(T s0.0 s0.1 . (E s0 . (T s1.0 s1.1 . (E s1 . .) .)) .)\n");
   CHECK(run(flip + "3/2 --augmented").out == run(flip + "1/2 --augmented").out);
+  CHECK(run(flip + "1/2 --augmented --tree").status == 2);  // one of them
   const Run boxes = run("build " + std::string(KVD_SOURCE_DIR) + "/data/boxes.json --augmented", "2>&1");
   CHECK(boxes.status == 2);
   CHECK(boxes.out.find("--augmented: only for kvd-segments/1 scenes") != std::string::npos);

@@ -66,6 +66,10 @@ TEST_CASE("unknown formats, missing keys and unknown keys are rejected", "[scene
   REJECTED_AT(R"({"format": "kvd-scene/2", "objects": [{}]})", "/format", "kvd-scene/1");
   REJECTED_AT(R"({"format": 1, "objects": [{}]})", "/format", "kvd-scene/1");
   REJECTED_AT(R"({"objects": []})", "/: ", "missing required key \"format\"");
+  // Another format's keys: the format is named unknown, not the keys.
+  REJECTED_AT(R"({"format": "kvd-segments/2", "segments": []})", "/format", "kvd-segments/1");
+  REJECTED_AT(R"({"format": 3, "segments": []})", "/format", "unknown format");
+  REJECTED_AT(R"({"segments": []})", "/: ", "missing required key \"format\"");
   REJECTED_AT(R"({"format": "kvd-scene/1"})", "/: ", "missing required key \"objects\"");
   REJECTED_AT(doc("[" + tri + "]", R"("objets": 1, )"), "/objets", "unknown key");
   REJECTED_AT(doc(R"([{"vertices": [[0,0,0],[1,0,0],[0,1,0]], "triangels": [[0,1,2]]}])"), "/objects/0/triangels", "unknown key");

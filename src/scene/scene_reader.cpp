@@ -169,11 +169,16 @@ void Reader::check_geometry(const Scene& s, const Load_options& options) const {
 }
 
 Scene Reader::read(const Json_value& doc, const Load_options& options) const {
+  // The format before the keys: a document of another format (say
+  // kvd-segments/2) is told its format is unknown, not that its keys are.
+  // Any format but kvd-segments/1 comes here (scene_format).
+  expect(doc, Kind::object, "");
+  const Json_value* format = doc.find("format");
+  if (!format) fail("", "missing required key \"format\" (\"kvd-scene/1\", or \"kvd-segments/1\" for segments)");
+  if (format->kind != Kind::string || format->text != "kvd-scene/1")
+    fail("/format", "unknown format (expected the string \"kvd-scene/1\", or \"kvd-segments/1\" for segments)");
   expect_object(doc, "", {"format", "name", "time", "decomposition", "priority", "objects"}, {"format", "objects"});
   Scene s;
-  const Json_value& format = *doc.find("format");
-  if (format.kind != Kind::string || format.text != "kvd-scene/1")
-    fail("/format", "unknown format (expected the string \"kvd-scene/1\")");
   if (const auto* n = doc.find("name")) {
     expect(*n, Kind::string, "/name");
     s.name = n->text;

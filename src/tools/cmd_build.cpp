@@ -132,6 +132,7 @@ int build(Args& args) {
     else if (a == "--no-filter") filter = false;
     else if (!sa.take(args, a)) args.unknown(a);
   }
+  if (augmented && tree_only) throw Usage_error("kvd build: --tree or --augmented, not both");
   const std::string text = sa.read_text("build");
   if (segments::scene_format(text) == "kvd-segments/1") {
     std::vector<std::string> triangle_only;

@@ -101,12 +101,18 @@ int generate(Args& args) {
   scene::Uniform_params p;
   std::size_t box_count = 9, blades = 3;
   segments::Segment_generator_options so;
+  // The options given that only the triangle families, or only the
+  // segments-* ones, read: the other kind refuses them.
+  std::vector<std::string> for_triangles, for_segments;
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
       std::cout << generate_help;
       return 0;
     }
+    if (a == "--triangles" || a == "--degree" || a == "--boxes" || a == "--blades") for_triangles.push_back(a);
+    if (a == "--n" || a == "--length" || a == "--crossings" || a == "--motion" || a == "--box" || a == "--end")
+      for_segments.push_back(a);
     if (a == "--triangles") p.triangles = args.unsigned_value(a);
     else if (a == "--degree") {
       const std::uint64_t d = args.unsigned_value(a);
@@ -133,7 +139,15 @@ int generate(Args& args) {
     else args.unknown(a);
   }
   if (!family) throw Usage_error("kvd generate: missing the FAMILY (see kvd generate --help)");
-  if (family->rfind("segments-", 0) == 0) {
+  const bool segment_family = family->rfind("segments-", 0) == 0;
+  const auto refuse = [&](const std::vector<std::string>& given, const char* kind) {
+    if (given.empty()) return;
+    std::string list;
+    for (const auto& f : given) list += (list.empty() ? "" : ", ") + f;
+    throw Usage_error("kvd generate: " + list + ": only for the " + kind + " families, not " + *family);
+  };
+  refuse(segment_family ? for_triangles : for_segments, segment_family ? "triangle" : "segments-*");
+  if (segment_family) {
     const std::string text = segment_scene_text(*family, so, moving);
     if (output) write_atomically("generate", *output, text);
     else std::cout << text;

@@ -4,6 +4,7 @@
 
 #include "cli.hpp"
 #include "json_out.hpp"
+#include "segment_commands.hpp"
 #include "kvd/scene/scene_io.hpp"
 #include "kvd/segments/segment_crossings.hpp"
 #include "kvd/segments/segment_io.hpp"
@@ -64,7 +65,10 @@ int info(Args& args) {
     if (!sa.take(args, a)) args.unknown(a);
   }
   const std::string text = sa.read_text("info");
-  if (segments::scene_format(text) == "kvd-segments/1") return segment_info(sa, text);
+  if (segments::scene_format(text) == "kvd-segments/1") {
+    if (sa.load.allow_intersecting) refuse_triangle_flags("info", {"--allow-intersecting"});
+    return segment_info(sa, text);
+  }
   const scene::Scene s = sa.read_scene("info", text);
   const std::string& path = *sa.path;
   const bool json = sa.json;
