@@ -490,6 +490,12 @@ TEST_CASE("kvd view and kvd animate refuse bad input with status 2 and write not
     std::ofstream(dir + "view-altered.trace") << text;
   }
   CHECK(run("view " + dir + "view-altered.trace --scene " + data + "boxes.json --out " + page).status == 2);
+  // A kvd diff report names its scene: --scene is refused, not ignored.
+  const std::string report = dir + "view-boxes-diff.json";
+  REQUIRE(run("diff " + data + "boxes.json --kernel double --json > " + report).status == 0);
+  const Run given = run("view " + report + " --scene " + data + "boxes.json --out " + page, "2>&1");
+  CHECK(given.status == 2);
+  CHECK(given.out.find("--scene is for a trace") != std::string::npos);
   CHECK(!std::ifstream(page).good());
   CHECK(run("animate " + data + "boxes.json --view 1,2 --out " + film).status == 2);      // not a point
   CHECK(run("animate " + data + "boxes.json --view 1,2,3").status == 2);                  // no --out
@@ -546,13 +552,16 @@ TEST_CASE("kvd generate writes segment scenes that kvd info reads back", "[cli][
   CHECK(run("generate segments-rotating --motion linear").status == 2);
   CHECK(run("generate segments-random --length 2").status == 2);
   CHECK(run("generate segments-spiral").status == 2);
-  // Each kind of family refuses the other kind's options rather than ignore them.
+  // Each family refuses the options it does not read rather than ignore them.
   const Run triangles = run("generate segments-random --n 5 --triangles 5 --degree 2", "2>&1");
   CHECK(triangles.status == 2);
-  CHECK(triangles.out.find("--triangles, --degree: only for the triangle families") != std::string::npos);
+  CHECK(triangles.out.find("--triangles, --degree: not read by the family segments-random") != std::string::npos);
   const Run segments = run("generate uniform-density --triangles 5 --n 5 --end 2", "2>&1");
   CHECK(segments.status == 2);
-  CHECK(segments.out.find("--n, --end: only for the segments-* families") != std::string::npos);
+  CHECK(segments.out.find("--n, --end: not read by the family uniform-density") != std::string::npos);
+  for (const char* args : {"rotor --moving 1/2", "boxes --degree 3", "segments-degenerate --length 1/2"})
+    CHECK(run(std::string("generate ") + args).status == 2);
+  CHECK(run("generate spiral --n 5", "2>&1").out.find("unknown family 'spiral'") != std::string::npos);
 }
 
 TEST_CASE("kvd build and kvd simulate run the cylindrical BSP of a segment scene", "[cli][build][simulate][segments]") {

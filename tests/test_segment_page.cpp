@@ -39,6 +39,9 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
   Run run(k, s, false);
   const auto& batches = data.at("batches");
   const auto& intervals = data.at("intervals");
+  // The time limit: the earlier of the scene's end and --until.
+  std::optional<mpq_class> limit = s.end;
+  if (until && (!limit || *until < *limit)) limit = until;
   REQUIRE(intervals.size() == batches.size() + 1);
   std::size_t failures = 0;
   for (std::size_t i = 0; i < intervals.size(); ++i) {
@@ -60,11 +63,13 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
       from = b.time;
     }
     const mpq_class instant(intervals[i].at("instant").get<std::string>());
-    // A batch at the span's end is drawn there (the tree at an instant is
-    // the one just after it); every other instant lies strictly after.
-    if (from && s.end && k.compare(*from, Exact_time(*s.end)) == 0) CHECK(instant == *s.end);
-    else CHECK(k.compare(Exact_time(instant), from ? *from : Exact_time(s.start)) > 0);
-    if (s.end) CHECK(instant <= *s.end);
+    // An interval from the time limit is drawn there (the tree at an
+    // instant is the one just after it); every other instant lies strictly
+    // after the interval's start, and none past the limit.
+    const Exact_time begins = from ? *from : Exact_time(s.start);
+    if (limit && k.compare(begins, Exact_time(*limit)) >= 0) CHECK(instant == *limit);
+    else CHECK(k.compare(Exact_time(instant), begins) > 0);
+    if (limit) CHECK(instant <= *limit);
     if (const auto next = run.next_event_time()) CHECK(k.compare(Exact_time(instant), *next) < 0);
     const std::string tree = intervals[i].at("tree");
     CHECK(tree == run.tree().text());
@@ -84,10 +89,8 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
                               : until && k.compare(*next, Exact_time(*until)) > 0 ? "limit"
                                                                                   : "events";
   CHECK(data.at("stopped") == stopped);
-  // The time reached: the limit (the earlier of the end and --until) when
-  // the page stopped there or ran out of failures, else the last batch's.
-  std::optional<mpq_class> limit = s.end;
-  if (until && (!limit || *until < *limit)) limit = until;
+  // The time reached: the limit when the page stopped there or ran out of
+  // failures, else the last batch's.
   CHECK(data.at("time_reached") == k.to_string(stopped != "events" && limit ? Exact_time(*limit) : run.now()));
   if (stopped == "events") {
     CHECK(failures >= max_events);
@@ -129,6 +132,42 @@ TEST_CASE("a batch at the span's end is drawn at the end, not after it", "[view]
     CHECK(data.at("intervals")[1].at("instant") == s.end->get_str());
     check_page(s, data, 100);
   }
+}
+
+TEST_CASE("a batch at --until is drawn there, though a failure follows", "[view][segments]") {
+  const Segment_scene s = bundled("random-100");
+  const Exact_kernel k;
+  Run run(k, s, false);
+  for (int i = 0; i < 3; ++i) run.advance();
+  REQUIRE(run.now().is_rational());
+  const mpq_class until = run.now().rational();
+  REQUIRE(run.next_event_time());
+  const nlohmann::json data = view::segment_page_data(s, "random-100", {until, 1000, 320});
+  CHECK(data.at("stopped") == "limit");
+  REQUIRE(data.at("batches").size() == 3);
+  CHECK(data.at("intervals")[3].at("instant") == until.get_str());
+  check_page(s, data, 1000, until);
+}
+
+// The instant drawn after a batch (kvd view and kvd animate, both kinds of
+// scene): inside the interval, never past the limit.
+TEST_CASE("drawn_after stays inside the interval and never passes the limit", "[view]") {
+  const Exact_kernel k;
+  const auto t = [](long p, long q) { return Exact_time(mpq_class(p, q)); };
+  const mpq_class within(1, 1000);
+  const auto in = [&](const mpq_class& x, const Exact_time& lo, const Exact_time& hi) {
+    return k.compare(Exact_time(x), lo) > 0 && k.compare(Exact_time(x), hi) < 0;
+  };
+  CHECK(in(view::drawn_after(t(1, 1), t(2, 1), std::nullopt, within), t(1, 1), t(2, 1)));
+  CHECK(in(view::drawn_after(t(1, 1), t(2, 1), mpq_class(3), within), t(1, 1), t(2, 1)));
+  // The next failure past the limit: inside (a, limit).
+  CHECK(in(view::drawn_after(t(1, 1), t(5, 1), mpq_class(1001, 1000), within), t(1, 1), t(1001, 1000)));
+  CHECK(in(view::drawn_after(t(1, 1), std::nullopt, mpq_class(1001, 1000), within), t(1, 1), t(1001, 1000)));
+  // A batch at the limit: the limit, whatever follows.
+  CHECK(view::drawn_after(t(2, 1), t(5, 1), mpq_class(2), within) == 2);
+  CHECK(view::drawn_after(t(2, 1), std::nullopt, mpq_class(2), within) == 2);
+  // No limit and no failure left: just after.
+  CHECK(in(view::drawn_after(t(2, 1), std::nullopt, std::nullopt, within), t(2, 1), t(2001, 1000)));
 }
 
 TEST_CASE("the segment page stops at --until, after the last batch at or before it", "[view][segments]") {

@@ -87,8 +87,15 @@ void measure(Run& run, std::size_t events, const std::string& label, Run_row& ro
       row.flips_in_place += flip && b.flipped_in_place > 0;
     } else {
       // A flip fails with the other x orders of the segment's points that
-      // its turning changes, all flips (event_in_batch).
-      flip = b.events[static_cast<std::size_t>(segments::Segment_event::flip)] == b.failing.size();
+      // its turning changes, all flips (event_in_batch); one segment's own
+      // endpoints' x order among them makes it one flip.
+      const auto own = [](const segments::Segment_certificate_key& key) {
+        using Point = segments::Site_point;
+        return key.kind == segments::Segment_certificate_key::Kind::x_order && key.p.kind == Point::Kind::endpoint &&
+               key.q.kind == Point::Kind::endpoint && key.p.a / 2 == key.q.a / 2;
+      };
+      flip = b.events[static_cast<std::size_t>(segments::Segment_event::flip)] == b.failing.size() &&
+             std::count_if(b.failing.begin(), b.failing.end(), own) == 1;
     }
     if (flip) {
       ++row.lone_flips;

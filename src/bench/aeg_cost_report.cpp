@@ -141,8 +141,12 @@ std::string markdown(const Config& c, const std::vector<Run_row>& rows, bool plo
       phases_table(rows) +
       "\n## Flips\n\n"
       "`kvd generate segments-rotating --n N --seed 1`: every segment turns about its midpoint, so that segments "
-      "turn through vertical. Both runs, up to the same failure number; per batch of one flip (in the paper's set, "
-      "with the transient cells between the segment's points, which close as it turns vertical), "
+      "turn through vertical. Both runs, as above, each up to the batch holding its failure number " +
+      std::to_string(c.events) +
+      " or to the span's end: the two sets fail at different instants, and the paper's fails more certificates "
+      "at a flip, so the runs meet different flips. Per batch of one flip (one segment's own endpoints changing "
+      "their x order, and only failures of that flip; in the paper's set, with the transient cells between the "
+      "segment's points, which close as it turns vertical), "
       "the nodes the update made again or, for a flip the paper's set turned in place (its section 3.1.4), "
       "edited in place, the signs it decided, its time. Neither run keeps the paper's augmented BSP, under which a "
       "flip would change no node: this is what a flip costs on the plain tree.\n\n" +

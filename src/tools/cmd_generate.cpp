@@ -4,7 +4,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "kvd/detail/scene/exact_number.hpp"
@@ -70,10 +74,10 @@ using Motion_kind = segments::Segment_motion_kind;
 // A segments-* family's scene text; its crossings at the start go to stderr.
 std::string segment_scene_text(const std::string& family, segments::Segment_generator_options o,
                                const std::optional<std::string>& moving) {
+  // The family is known (refuse_others).
   if (family == "segments-random") o.family = Family::random;
   else if (family == "segments-rotating") o.family = Family::rotating;
-  else if (family == "segments-degenerate") o.family = Family::degenerate;
-  else throw Usage_error("kvd generate: unknown family '" + family + "' (see kvd generate --help)");
+  else o.family = Family::degenerate;
   if (o.n > 20000) throw Usage_error("kvd generate: at most 20000 segments");
   if (moving) {
     if (moving->empty() || moving->size() > 5 || moving->find_first_not_of("0123456789") != std::string::npos)
@@ -94,6 +98,24 @@ std::string segment_scene_text(const std::string& family, segments::Segment_gene
   return text;
 }
 
+// Refuses, rather than ignores, the options given that `family` does not read.
+void refuse_others(const std::string& family, const std::vector<std::string>& given) {
+  static const std::map<std::string, std::set<std::string>> reads{
+      {"uniform-scale", {"--triangles", "--moving", "--degree"}},
+      {"uniform-density", {"--triangles", "--moving", "--degree"}},
+      {"boxes", {"--boxes", "--moving"}},
+      {"rotor", {"--blades"}},
+      {"segments-random", {"--n", "--moving", "--length", "--crossings", "--motion", "--box", "--end"}},
+      {"segments-rotating", {"--n", "--moving", "--length", "--crossings", "--motion", "--box", "--end"}},
+      {"segments-degenerate", {"--n", "--moving", "--motion", "--box", "--end"}}};
+  const auto it = reads.find(family);
+  if (it == reads.end()) throw Usage_error("kvd generate: unknown family '" + family + "' (see kvd generate --help)");
+  std::string list;
+  for (const std::string& a : given)
+    if (!it->second.count(a)) list += (list.empty() ? "" : ", ") + a;
+  if (!list.empty()) throw Usage_error("kvd generate: " + list + ": not read by the family " + family + " (see kvd generate --help)");
+}
+
 }  // namespace
 
 int generate(Args& args) {
@@ -101,18 +123,14 @@ int generate(Args& args) {
   scene::Uniform_params p;
   std::size_t box_count = 9, blades = 3;
   segments::Segment_generator_options so;
-  // The options given that only the triangle families, or only the
-  // segments-* ones, read: the other kind refuses them.
-  std::vector<std::string> for_triangles, for_segments;
+  std::vector<std::string> given;  // the options given but --seed and -o, which every family reads
   while (!args.done()) {
     const std::string& a = args.next();
     if (a == "--help" || a == "-h") {
       std::cout << generate_help;
       return 0;
     }
-    if (a == "--triangles" || a == "--degree" || a == "--boxes" || a == "--blades") for_triangles.push_back(a);
-    if (a == "--n" || a == "--length" || a == "--crossings" || a == "--motion" || a == "--box" || a == "--end")
-      for_segments.push_back(a);
+    if (a.rfind("--", 0) == 0 && a != "--seed") given.push_back(a);
     if (a == "--triangles") p.triangles = args.unsigned_value(a);
     else if (a == "--degree") {
       const std::uint64_t d = args.unsigned_value(a);
@@ -139,15 +157,8 @@ int generate(Args& args) {
     else args.unknown(a);
   }
   if (!family) throw Usage_error("kvd generate: missing the FAMILY (see kvd generate --help)");
-  const bool segment_family = family->rfind("segments-", 0) == 0;
-  const auto refuse = [&](const std::vector<std::string>& given, const char* kind) {
-    if (given.empty()) return;
-    std::string list;
-    for (const auto& f : given) list += (list.empty() ? "" : ", ") + f;
-    throw Usage_error("kvd generate: " + list + ": only for the " + kind + " families, not " + *family);
-  };
-  refuse(segment_family ? for_triangles : for_segments, segment_family ? "triangle" : "segments-*");
-  if (segment_family) {
+  refuse_others(*family, given);
+  if (family->rfind("segments-", 0) == 0) {
     const std::string text = segment_scene_text(*family, so, moving);
     if (output) write_atomically("generate", *output, text);
     else std::cout << text;
@@ -172,8 +183,7 @@ int generate(Args& args) {
     if (*family == "uniform-scale") s = scene::uniform_scale(p);
     else if (*family == "uniform-density") s = scene::uniform_density(p);
     else if (*family == "boxes") s = scene::boxes(box_count, p.moving, p.seed);
-    else if (*family == "rotor") s = scene::rotor(blades, p.seed);
-    else throw Usage_error("kvd generate: unknown family '" + *family + "' (see kvd generate --help)");
+    else s = scene::rotor(blades, p.seed);  // the family is known (refuse_others)
   } catch (const scene::Generator_error& e) {
     throw Usage_error(std::string("kvd generate: ") + e.what());
   }

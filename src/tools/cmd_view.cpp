@@ -27,7 +27,8 @@ const char* const view_help =
     "    tree just after it, its exact time, the failing certificates with\n"
     "    their features marked in red, and the nodes it changed;\n"
     "  * the tree itself as a collapsible outline.\n"
-    "Each interval of the run is drawn at a rational instant inside it.\n"
+    "Each interval of the run is drawn at a rational instant inside it, never\n"
+    "past the time limit (a batch at the limit is drawn there).\n"
     "\n"
     "REPORT is the output of kvd diff --json: the page then also lists the exact\n"
     "and the floating-point events side by side, with the first divergence\n"
@@ -45,7 +46,7 @@ const char* const view_help =
     "kinetic cylindrical BSP (seed 003, as kvd simulate) and writes a page of\n"
     "its pictures: for each interval of the run (before the first batch, then\n"
     "after each) the cells and cuts of the tree in force, drawn at a rational\n"
-    "instant inside it with the segments the batch's failing certificates name\n"
+    "instant inside it (at the limit for a batch there) with the segments the batch's failing certificates name\n"
     "marked in red; the timeline (arrow keys step through it), each batch's\n"
     "exact time, events and failing certificates, and the tree as an outline.\n"
     "Every tree shown is compared with a fresh build at its instant (exit 1,\n"
@@ -183,6 +184,9 @@ int view(Args& args) {
   const std::string text = scene::read_input(input);
   const auto report = diff_report(input, text);
   const auto trace = report ? std::nullopt : trace_events(input, text);
+  if (scene_of_trace && !trace)
+    throw Usage_error("kvd view: --scene is for a trace; " + scene::input_name(input) + " is " +
+                      (report ? "a kvd diff report, which names its scene" : "a scene"));
   std::optional<std::vector<Listed_event>> listed;
   if (report) {
     sa.path = report_scene(input, *report);
@@ -193,8 +197,6 @@ int view(Args& args) {
     listed = trace;
   }
   if (listed) o.max_events = listed->size();
-  else if (scene_of_trace)
-    throw Usage_error("kvd view: --scene is for a trace; " + scene::input_name(input) + " is a scene");
   // The input is read once: standard input cannot be read again.
   const std::string scene_text = listed ? sa.read_text("view") : text;
   if (segments::scene_format(scene_text) == "kvd-segments/1") {

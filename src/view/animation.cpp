@@ -23,9 +23,9 @@ struct Planned {
 };
 
 // Sampled instants over [start, end] and one just after each batch, in time
-// order. `end` is the limit when the run went on to it, else its last batch
-// (the start when it stopped for its events before any; a second on when it
-// ran out of events with no limit).
+// order. `end` is the limit when the run went on to it, else its last batch;
+// with no batch, the start when the run stopped for its events, or a second
+// on when it ran out of them with no limit.
 std::vector<Planned> plan(const Recorded_run& run, int sampled) {
   const auto& batches = run.sim.batches;
   const mpq_class start = run.scene.start;
@@ -128,10 +128,10 @@ mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& 
 
 mpq_class drawn_after(const Exact_time& a, const std::optional<Exact_time>& b, const std::optional<mpq_class>& end,
                       const mpq_class& within) {
-  if (b) return just_after(a, *b, within);
-  if (!end) return just_after(a, Exact_time(a.upper() + within), within);
-  if (Exact_kernel().compare(a, Exact_time(*end)) >= 0) return *end;
-  return just_after(a, Exact_time(*end), within);
+  const Exact_kernel k;
+  if (end && k.compare(a, Exact_time(*end)) >= 0) return *end;
+  if (end && (!b || k.compare(*b, Exact_time(*end)) > 0)) return just_after(a, Exact_time(*end), within);
+  return just_after(a, b ? *b : Exact_time(a.upper() + within), within);
 }
 
 std::vector<Animation_frame> animation_frames(const Recorded_run& run, const Animation_options& o,

@@ -37,8 +37,8 @@ mpq_class just_after(const Exact_time& a, const Exact_time& b, const mpq_class& 
 
 // The instant drawn for the interval after a batch at a, up to the next
 // failure b (none: the run has none left), never past `end` (the time
-// limit, if any). A batch at `end` itself is drawn there: the tree at an
-// instant is the one in force just after it.
+// limit, if any), even when b lies beyond it. A batch at `end` itself is
+// drawn there: the tree at an instant is the one in force just after it.
 mpq_class drawn_after(const Exact_time& a, const std::optional<Exact_time>& b, const std::optional<mpq_class>& end,
                       const mpq_class& within);
 

@@ -89,10 +89,11 @@ std::vector<Interval> intervals(const Recorded_run& run) {
 }
 
 Instant inside(const Recorded_run& run, const Interval& i) {
-  if (i.to) return Instant(run, kinetic::rational_between(i.from, *i.to));
-  // A batch at the time limit: the tree at an instant is the one just after it.
+  // A batch at the time limit: the tree at an instant is the one just after
+  // it (a run stopped for its events there still has its next failure).
   if (run.sim.limit && Exact_kernel().compare(i.from, Exact_time(*run.sim.limit)) >= 0)
     return Instant(run, *run.sim.limit);
+  if (i.to) return Instant(run, kinetic::rational_between(i.from, *i.to));
   mpq_class step(1);
   for (int tries = 0;; ++tries, step /= 2) {
     while (!i.from.is_rational() && i.from.upper() - i.from.lower() > step) i.from.refine();

@@ -77,7 +77,9 @@ std::vector<Interval> intervals(const Recorded_run& run);
 
 // The KVD at a rational strictly inside the interval: its midpoint, or for an
 // open end one time unit on, moved closer to `from` while triangles would
-// meet there (the run stopped before an event it did not process).
+// meet there (the run stopped before an event it did not process). An
+// interval from the time limit is drawn at the limit (the tree at an
+// instant is the one just after it).
 Instant inside(const Recorded_run& run, const Interval& i);
 
 }  // namespace kvd::view

@@ -52,9 +52,12 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   const Exact_kernel k;
   Run run(k, s, false);
   const mpq_class within = (s.end ? *s.end - s.start : mpq_class(1)) / 1000;
+  // The time limit: the earlier of the scene's end and --until.
+  std::optional<mpq_class> limit = s.end;
+  if (o.until && (!limit || *o.until < *limit)) limit = o.until;
   // The instant drawn for the interval from `from` to the next failure.
   const auto inside = [&](const Exact_time& from, const std::optional<Exact_time>& to) {
-    return drawn_after(from, to, s.end, within);
+    return drawn_after(from, to, limit, within);
   };
   std::vector<Run::Batch> batches;
   std::vector<Run_interval> intervals;
@@ -109,11 +112,8 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   }
   nlohmann::json list = nlohmann::json::array();
   for (const auto& b : batches) list.push_back(batch_json(k, b));
-  // The time reached: the last batch's, or the limit (the earlier of the
-  // scene's end and --until) when the page stopped there or ran out of
-  // failures before it, as kvd simulate says.
-  std::optional<mpq_class> limit = s.end;
-  if (o.until && (!limit || *o.until < *limit)) limit = o.until;
+  // The time reached: the last batch's, or the limit when the page stopped
+  // there or ran out of failures before it, as kvd simulate says.
   const Exact_time reached = stopped != "events" && limit ? Exact_time(*limit) : run.now();
   return {{"format", "kvd-segment-view/1"},
           {"title", title},
