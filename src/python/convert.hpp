@@ -5,6 +5,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
 #include <stdexcept>
 #include <optional>
 #include <string>
@@ -25,16 +26,45 @@ namespace kvd::python {
 
 namespace py = pybind11;
 
+// Numbers cross in base 16: Python (3.11 on) refuses to convert integers of
+// more than 4,300 decimal digits to or from text, but not in base 16.
+
 // Any number Python's Fraction takes (int, Fraction, float exactly, "1/3", "0.25").
 inline mpq_class to_mpq(const py::handle& x) {
   const py::object fraction = py::module_::import("fractions").attr("Fraction")(x);
-  mpq_class q(py::str(fraction).cast<std::string>());
+  const py::object hex = py::module_::import("builtins").attr("format");
+  mpq_class q(hex(fraction.attr("numerator"), "x").cast<std::string>() + "/" +
+                  hex(fraction.attr("denominator"), "x").cast<std::string>(),
+              16);
   q.canonicalize();
   return q;
 }
 
 inline py::object to_fraction(const mpq_class& q) {
-  return py::module_::import("fractions").attr("Fraction")(q.get_str());
+  const py::object integer = py::module_::import("builtins").attr("int");
+  return py::module_::import("fractions").attr("Fraction")(integer(q.get_num().get_str(16), 16),
+                                                           integer(q.get_den().get_str(16), 16));
+}
+
+// An int in [0, 2^64) (not a bool), for a seed or an index: TypeError or
+// ValueError naming `what` otherwise.
+inline std::uint64_t to_unsigned(const py::handle& x, const char* what) {
+  if (!py::isinstance<py::int_>(x) || py::isinstance<py::bool_>(x))
+    throw py::type_error(std::string(what) + " must be an int, not " + py::str(py::type::of(x).attr("__name__")).cast<std::string>());
+  try {
+    return x.cast<std::uint64_t>();
+  } catch (const py::cast_error&) {
+    throw py::value_error(std::string(what) + " must be in [0, 2^64), not " + py::str(x).cast<std::string>());
+  }
+}
+
+// A list or tuple as a list: TypeError naming `what` for anything else
+// (a string is not a list of its characters here).
+inline py::list to_list(const py::handle& x, const char* what) {
+  if (!py::isinstance<py::list>(x) && !py::isinstance<py::tuple>(x))
+    throw py::type_error(std::string(what) + " must be a list or tuple, not " +
+                         py::str(py::type::of(x).attr("__name__")).cast<std::string>());
+  return py::list(py::reinterpret_borrow<py::object>(x));
 }
 
 // An instant as Python sees it: the library's text, a float, and for an
@@ -56,15 +86,29 @@ auto with_kernel(const std::string& kernel, F f) {
   if (kernel == "exact") return f(Exact_kernel());
   if (kernel == "double") return f(Double_kernel());
   if (kernel.rfind("mpfr:", 0) == 0) {
-    unsigned long bits = 0;
-    try {
-      bits = std::stoul(kernel.substr(5));
-    } catch (const std::exception&) {
-    }
-    if (bits < 2 || bits > 65536) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536");
+    // Digits only, as on the command line (stoul would take "+64", " 64",
+    // "64abc" and wrap "-1").
+    const std::string digits = kernel.substr(5);
+    const unsigned long bits = !digits.empty() && digits.size() <= 5 &&
+                                       digits.find_first_not_of("0123456789") == std::string::npos
+                                   ? std::stoul(digits)
+                                   : 0;
+    if (bits < 2 || bits > 65536) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536, not '" + kernel + "'");
     return f(Mpfr_kernel(static_cast<unsigned>(bits)));
   }
   throw py::value_error("kernel is 'exact', 'double' or 'mpfr:BITS', not '" + kernel + "'");
+}
+
+// For a class Python cannot construct (its objects come from the module's
+// functions): Class.__new__(Class) is refused, where it would make an object
+// with nothing inside, which the methods would read.
+inline py::custom_type_setup made_by_the_module() {
+  return py::custom_type_setup([](PyHeapTypeObject* type) {
+    type->ht_type.tp_new = [](PyTypeObject* t, PyObject*, PyObject*) -> PyObject* {
+      PyErr_Format(PyExc_TypeError, "%s objects are made by the module's functions, not directly", t->tp_name);
+      return nullptr;
+    };
+  });
 }
 
 // The module's part for segment scenes (segment_bindings.cpp), and the run

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstring>
 #include <memory>
 #include <string>
 #include <variant>
@@ -31,10 +32,10 @@ using kvd::scene::Scene;
 Scene scene_from_lists(const py::list& objects, const py::handle& start, const py::handle& end, std::uint64_t seed) {
   using Json = nlohmann::ordered_json;
   const auto number = [](const py::handle& x) { return Json(to_mpq(x).get_str()); };
-  const auto index = [](const py::handle& i) { return Json(i.cast<std::size_t>()); };
+  const auto index = [](const py::handle& i) { return Json(kvd::python::to_unsigned(i, "a vertex index")); };
   const auto list = [](const py::handle& items, const auto& item) {
     Json out = Json::array();
-    for (const auto& i : py::reinterpret_borrow<py::list>(items)) out.push_back(item(i));
+    for (const auto& i : kvd::python::to_list(items, "vertices, triangles, a point and a translation")) out.push_back(item(i));
     return out;
   };
   const auto points = [&](const py::handle& items) {
@@ -44,6 +45,7 @@ Scene scene_from_lists(const py::list& objects, const py::handle& start, const p
   if (!end.is_none()) time["end"] = number(end);
   Json scene = {{"format", "kvd-scene/1"}, {"priority", {{"seed", seed}}}, {"time", time}, {"objects", Json::array()}};
   for (const auto& o : objects) {
+    if (!py::isinstance<py::dict>(o)) throw py::type_error("an object is a dict with vertices, triangles and translation");
     const auto d = py::reinterpret_borrow<py::dict>(o);
     Json object = {{"vertices", points(d["vertices"])},
                    {"triangles", list(d["triangles"], [&](const py::handle& t) { return list(t, index); })}};
@@ -132,7 +134,7 @@ public:
     m.kind = kvd::scene::Motion::Kind::translation;
     for (std::size_t j = 0; j < 3; ++j) {
       std::vector<mpq_class> c;
-      for (const auto& x : py::reinterpret_borrow<py::list>(translation[j])) c.push_back(to_mpq(x));
+      for (const auto& x : kvd::python::to_list(translation[j], "a translation's polynomial")) c.push_back(to_mpq(x));
       m.translation[j] = kvd::scene::QPoly(std::move(c));
     }
     kds_.set_motion(object, m, to_mpq(at));
@@ -219,10 +221,19 @@ std::unique_ptr<Any_kinetic> make_kinetic(const Scene& s, const std::string& ker
 
 PYBIND11_MODULE(kvd, m) {
   m.doc() = "Kinetic Vertical Decomposition trees of moving triangles, decided exactly (kvd/kvd.hpp)";
-  py::register_exception<kvd::scene::Scene_error>(m, "SceneError", PyExc_ValueError);
+  static py::exception<kvd::scene::Scene_error> scene_error(m, "SceneError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const kvd::scene::Scene_error& e) {
+      // The message may quote the input's bytes, which need not be UTF-8.
+      const auto text = py::reinterpret_steal<py::object>(PyUnicode_DecodeUTF8(e.what(), std::strlen(e.what()), "replace"));
+      PyErr_SetObject(scene_error.ptr(), text.ptr());
+    }
+  });
   py::register_exception<kvd::tree::Build_error>(m, "BuildError", PyExc_ValueError);
 
-  py::class_<Scene>(m, "Scene", "A scene of moving triangles (SCENE_FORMAT.md)")
+  py::class_<Scene>(m, "Scene", "A scene of moving triangles (SCENE_FORMAT.md)", kvd::python::made_by_the_module())
       .def_property_readonly("triangles", [](const Scene& s) { return s.triangles.size(); })
       .def_property_readonly("vertices", [](const Scene& s) { return s.rest.size(); })
       .def_property_readonly("objects", [](const Scene& s) { return s.objects.size(); })
@@ -237,7 +248,7 @@ PYBIND11_MODULE(kvd, m) {
       "load_scene",
       [](const std::string& path, const py::object& seed) {
         kvd::scene::Load_options o;
-        if (!seed.is_none()) o.seed = seed.cast<std::uint64_t>();
+        if (!seed.is_none()) o.seed = kvd::python::to_unsigned(seed, "seed");
         return kvd::scene::load_scene(path, o);
       },
       py::arg("path"), py::arg("seed") = py::none(),

@@ -181,7 +181,8 @@ std::unique_ptr<Any_segment_kinetic> make_kinetic(const Segment_scene& s, const 
 }  // namespace
 
 void bind_segments(py::module_& m) {
-  py::class_<Segment_scene>(m, "SegmentScene", "A scene of moving segments in the plane (SEGMENT_FORMAT.md)")
+  py::class_<Segment_scene>(m, "SegmentScene", "A scene of moving segments in the plane (SEGMENT_FORMAT.md)",
+                            made_by_the_module())
       .def_property_readonly("segments", [](const Segment_scene& s) { return s.segments.size(); })
       .def_property_readonly("start", [](const Segment_scene& s) { return to_fraction(s.start); })
       .def_property_readonly("end",
@@ -193,7 +194,7 @@ void bind_segments(py::module_& m) {
       "load_segments",
       [](const std::string& path, const py::object& seed) {
         segments::Segment_load_options o;
-        if (!seed.is_none()) o.seed = seed.cast<std::uint64_t>();
+        if (!seed.is_none()) o.seed = to_unsigned(seed, "seed");
         return segments::load_segments(path, o);
       },
       py::arg("path"), py::arg("seed") = py::none(),

@@ -71,6 +71,61 @@ def test_bad_input_raises_value_errors_that_name_the_place():
         kvd.load_scene(os.path.join(DATA, "README.md"))
 
 
+TRIANGLE = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+
+
+def test_lists_take_tuples_and_refuse_other_types_with_type_errors():
+    # Tuples are lists here; a string, None, a float index or a mapping that
+    # is not a dict are refused, not read as something else (or crash).
+    assert kvd.scene([{"vertices": [tuple(v) for v in TRIANGLE], "triangles": [(0, 1, 2)]}]).triangles == 1
+    for bad in ({"vertices": TRIANGLE, "triangles": ["abc"]},
+                {"vertices": TRIANGLE, "triangles": [[0, 1, 2]], "translation": None},
+                {"vertices": TRIANGLE, "triangles": [[0, 1, 2.0]]},
+                [("vertices", TRIANGLE), ("triangles", [[0, 1, 2]])]):
+        with pytest.raises(TypeError):
+            kvd.scene([bad])
+    with pytest.raises(ValueError, match="vertex index"):
+        kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, -1]]}])
+    run = kvd.Kinetic(kvd.load_scene(scene_file("two-triangles.json")))
+    with pytest.raises(TypeError):
+        run.set_motion(1, [None, None, None], 1)
+
+
+def test_seeds_and_kernel_names_are_checked_as_on_the_command_line():
+    for seed, error in ((-1, ValueError), (2**64, ValueError), (1.5, TypeError), ("3", TypeError)):
+        with pytest.raises(error, match="seed"):
+            kvd.load_scene(scene_file("two-triangles.json"), seed=seed)
+        with pytest.raises(error, match="seed"):
+            kvd.load_segments(os.path.join(DATA, "segments", "two-crossing.json"), seed=seed)
+    s = kvd.load_scene(scene_file("two-triangles.json"))
+    for kernel in ("mpfr:64abc", "mpfr: 64", "mpfr:+64", "mpfr:-18446744073709551614", "mpfr:"):
+        with pytest.raises(ValueError, match="mpfr:BITS"):
+            kvd.Kinetic(s, kernel=kernel)
+    assert kvd.Kinetic(s, kernel="mpfr:64").next_event_time is not None
+
+
+def test_scenes_are_made_by_the_module_only():
+    for cls in (kvd.Scene, kvd.SegmentScene):
+        with pytest.raises(TypeError, match="made by the module"):
+            cls.__new__(cls)
+
+
+def test_numbers_of_thousands_of_digits_cross_both_ways(tmp_path):
+    # Python converts at most 4,300 decimal digits to or from text.
+    big = 10**5000
+    s = kvd.scene([{"vertices": [[big, 0, 0], [big + 1, 0, 0], [big, 1, 0]], "triangles": [[0, 1, 2]]}],
+                  start=Fraction(1, big), end=1)
+    assert s.start == Fraction(1, big)
+    assert kvd.build(s)["nodes"] > 0
+
+
+def test_an_error_quoting_bytes_that_are_not_utf8_keeps_its_message(tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_bytes(b"\xff\xfe{}")
+    with pytest.raises(kvd.SceneError, match="malformed JSON"):
+        kvd.load_segments(str(bad))
+
+
 @pytest.mark.parametrize("name", ["uniform-scale-25.json", "collisions.json"])
 def test_stepping_gives_the_batches_of_kvd_simulate(name, tmp_path):
     trace = tmp_path / "trace"
