@@ -242,6 +242,20 @@ TEST_CASE("with --collisions stop a face landing flat stops the run at its exact
   CHECK(sim.collision->find("VT") != std::string::npos);
 }
 
+// With 8 bits the epsilon swamps every certificate near the contact, so no
+// reversal instant between now and the contact is clear of their roots:
+// the run gives up on the collision there (it tried ever closer instants
+// for ever, with ever longer rationals).
+TEST_CASE("a run whose epsilon swamps the certificates near a contact ends", "[collision][kinetic][float]") {
+  const scene::Scene s = load("collisions.json");
+  kinetic::Options o;
+  o.max_events = 300;
+  const Mpfr_kernel coarse(8);
+  const auto sim = kinetic::simulate(coarse, s, o);
+  CHECK(sim.stopped == kinetic::Stop::collision);
+  CHECK(sim.collision);
+}
+
 TEMPLATE_TEST_CASE("in_triangle: a vertex in a triangle's plane touches it only inside, boundary included", "[collision]",
                    KVD_ALL_KERNELS) {
   // Object 0: a horizontal triangle (plane z = 0) and a vertical one (plane

@@ -99,13 +99,18 @@ private:
   // kinetic::reversal_time, moved past any root of a certificate in force
   // (so that the tree in force is valid at r with the old motions and,
   // positions being continuous, with the new ones); none when a
-  // floating-point run cannot separate the collision from now.
+  // floating-point run cannot separate the collision from now, or finds a
+  // root of a certificate at every instant it tries (its epsilon swamps
+  // them: with mpfr:8 this went on for ever, each try closer to c with a
+  // longer rational). The exact kernel moves past each root once.
   std::optional<mpq_class> reversal_time(const In_force<K>& in_force, const Time& now, const Time& collision) const {
     Exact_time a = exact(now);
     const Exact_time c = exact(collision);
     if constexpr (!std::is_same_v<K, Exact_kernel>)
       if (a.upper() >= c.lower()) return std::nullopt;
-    for (;;) {
+    for (int tries = 0;; ++tries) {
+      if constexpr (!std::is_same_v<K, Exact_kernel>)
+        if (tries == floating_point_tries) return std::nullopt;
       const mpq_class r = kinetic::reversal_time(a, c);
       const Time at = k_.time(from_rational<FT>(r));
       bool root = false;
@@ -116,6 +121,8 @@ private:
       a = Exact_time(r);
     }
   }
+
+  static constexpr int floating_point_tries = 64;
 
   static Exact_time exact(const Exact_time& t) { return t; }
   template <class T>
