@@ -58,6 +58,16 @@ inline std::uint64_t to_unsigned(const py::handle& x, const char* what) {
   }
 }
 
+// The instant t (None: the scene's start) of a build, within the scene's
+// time span as on the command line (ValueError otherwise).
+inline mpq_class instant_in_span(const py::handle& t, const mpq_class& start, const std::optional<mpq_class>& end) {
+  const mpq_class at = t.is_none() ? start : to_mpq(t);
+  if (at < start || (end && at > *end))
+    throw py::value_error("t = " + at.get_str() + " is outside the scene's time span [" + start.get_str() + ", " +
+                          (end ? end->get_str() : "no end") + "]");
+  return at;
+}
+
 // A list or tuple as a list: TypeError naming `what` for anything else
 // (a string is not a list of its characters here).
 inline py::list to_list(const py::handle& x, const char* what) {

@@ -94,7 +94,7 @@ kvd::Point4<mpq_class> view_point(const py::sequence& v) {
 }
 
 py::dict build(const Scene& s, const py::handle& t, const py::object& view) {
-  const mpq_class at = t.is_none() ? s.start : to_mpq(t);
+  const mpq_class at = kvd::python::instant_in_span(t, s.start, s.end);
   const kvd::Exact_kernel k;
   const kvd::predicates::Classifier<kvd::Exact_kernel> c(k, s);
   const kvd::tree::Kvd_tree tree = kvd::tree::build(c, kvd::Exact_time(at));

@@ -40,7 +40,7 @@ namespace {
 using segments::Segment_scene;
 
 py::dict build(const Segment_scene& s, const py::handle& t) {
-  const mpq_class at = t.is_none() ? s.start : to_mpq(t);
+  const mpq_class at = instant_in_span(t, s.start, s.end);
   const Exact_kernel k;
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
   const segments::Cylindrical_bsp b = segments::build_cylindrical_bsp(pred, Exact_time(at));

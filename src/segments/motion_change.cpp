@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/detail/kernel/zpoly.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 
@@ -33,6 +34,17 @@ void check_motion_change(const K& k, const Segment_scene& scene, std::size_t seg
         throw std::invalid_argument("set_motion: the new motion moves endpoint " + std::to_string(e) +
                                     " away from where it is now");
   }
+  // The endpoints meet where both cross differences vanish, the roots of
+  // their gcd (as the scene reader checks a file's motions); now they are
+  // apart, since the segment is where it was.
+  const auto p = is.endpoint(0), q = is.endpoint(1);
+  zpoly::ZPoly g;
+  for (const QPoly& d : {p[0] * q[2] - q[0] * p[2], p[1] * q[2] - q[1] * p[2]})
+    if (!d.is_zero()) g = zpoly::gcd(g, zpoly::to_zpoly(d));
+  if (zpoly::degree(g) >= 1)
+    if (const auto r = k.next_root(poly_from_rational<FT>(zpoly::to_poly(g)), now); r && !(end && k.compare(*r, *end) > 0))
+      throw std::invalid_argument("set_motion: the segment's endpoints coincide at t = " + k.to_string(*r) +
+                                  ", inside the span");
 }
 
 #define KVD_INSTANTIATE_CHECK_MOTION_CHANGE(K)                                                                 \

@@ -91,6 +91,17 @@ def test_lists_take_tuples_and_refuse_other_types_with_type_errors():
         run.set_motion(1, [None, None, None], 1)
 
 
+def test_builds_are_refused_outside_the_time_span_as_on_the_command_line():
+    s = kvd.load_scene(scene_file("two-triangles.json"))
+    segments = kvd.load_segments(os.path.join(DATA, "segments", "two-crossing.json"))
+    for t in (100, -5):
+        with pytest.raises(ValueError, match="outside the scene's time span"):
+            kvd.build(s, t)
+        with pytest.raises(ValueError, match="outside the scene's time span"):
+            kvd.build_segments(segments, t)
+    assert kvd.build_segments(segments, 10)["nodes"] > 0
+
+
 def test_seeds_and_kernel_names_are_checked_as_on_the_command_line():
     for seed, error in ((-1, ValueError), (2**64, ValueError), (1.5, TypeError), ("3", TypeError)):
         with pytest.raises(error, match="seed"):
@@ -316,6 +327,10 @@ def test_segment_set_motion_rejects_bad_motions(run):
     # Back to its rest position at 1/2: a jump.
     with pytest.raises(ValueError, match="away from where it is now"):
         k.set_motion(1, None, Fraction(1, 2))
+    # Endpoints that meet at t = 1, inside the span: a file with this motion
+    # is refused too.
+    with pytest.raises(ValueError, match="endpoints coincide at t = 1"):
+        k.set_motion(1, {"endpoints": [[[3, 1], [4, -1], 1], [[6, -2], [1, 2], 1]]}, 0)
     # A change refused leaves the run where it was.
     assert k.now["time"] == "0" and k.summary["motion_changes"] == 0
     k.advance_to(Fraction(1, 2))
