@@ -46,11 +46,14 @@ inline py::object to_fraction(const mpq_class& q) {
                                                            integer(q.get_den().get_str(16), 16));
 }
 
+// The name of x's type, for a TypeError.
+inline std::string type_name(const py::handle& x) { return py::str(py::type::of(x).attr("__name__")); }
+
 // An int in [0, 2^64) (not a bool), for a seed or an index: TypeError or
 // ValueError naming `what` otherwise.
 inline std::uint64_t to_unsigned(const py::handle& x, const char* what) {
   if (!py::isinstance<py::int_>(x) || py::isinstance<py::bool_>(x))
-    throw py::type_error(std::string(what) + " must be an int, not " + py::str(py::type::of(x).attr("__name__")).cast<std::string>());
+    throw py::type_error(std::string(what) + " must be an int, not " + type_name(x));
   try {
     return x.cast<std::uint64_t>();
   } catch (const py::cast_error&) {
@@ -72,8 +75,7 @@ inline mpq_class instant_in_span(const py::handle& t, const mpq_class& start, co
 // (a string is not a list of its characters here).
 inline py::list to_list(const py::handle& x, const char* what) {
   if (!py::isinstance<py::list>(x) && !py::isinstance<py::tuple>(x))
-    throw py::type_error(std::string(what) + " must be a list or tuple, not " +
-                         py::str(py::type::of(x).attr("__name__")).cast<std::string>());
+    throw py::type_error(std::string(what) + " must be a list or tuple, not " + type_name(x));
   return py::list(py::reinterpret_borrow<py::object>(x));
 }
 

@@ -29,12 +29,16 @@ std::optional<Exact_time> first_zero(const QPoly& p, const Q& start, const std::
   return first_root(zpoly::to_zpoly(p), start, end);
 }
 
-std::optional<Exact_time> first_common_zero(const std::vector<QPoly>& ps, const Q& start,
-                                            const std::optional<Q>& end) {
+zpoly::ZPoly common_divisor(const std::vector<QPoly>& ps) {
   zpoly::ZPoly g;
   for (const QPoly& p : ps)
     if (!p.is_zero()) g = zpoly::gcd(g, zpoly::to_zpoly(p));
-  return first_root(g, start, end);
+  return g;
+}
+
+std::optional<Exact_time> first_common_zero(const std::vector<QPoly>& ps, const Q& start,
+                                            const std::optional<Q>& end) {
+  return first_root(common_divisor(ps), start, end);
 }
 
 std::string instant_text(const Exact_time& t) {

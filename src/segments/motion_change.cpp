@@ -6,6 +6,7 @@
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/detail/kernel/zpoly.hpp"
+#include "kvd/detail/scene/span_check.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/kernel.hpp"
 
@@ -38,9 +39,7 @@ void check_motion_change(const K& k, const Segment_scene& scene, std::size_t seg
   // their gcd (as the scene reader checks a file's motions); now they are
   // apart, since the segment is where it was.
   const auto p = is.endpoint(0), q = is.endpoint(1);
-  zpoly::ZPoly g;
-  for (const QPoly& d : {p[0] * q[2] - q[0] * p[2], p[1] * q[2] - q[1] * p[2]})
-    if (!d.is_zero()) g = zpoly::gcd(g, zpoly::to_zpoly(d));
+  const zpoly::ZPoly g = scene::common_divisor({p[0] * q[2] - q[0] * p[2], p[1] * q[2] - q[1] * p[2]});
   if (zpoly::degree(g) >= 1)
     if (const auto r = k.next_root(poly_from_rational<FT>(zpoly::to_poly(g)), now); r && !(end && k.compare(*r, *end) > 0))
       throw std::invalid_argument("set_motion: the segment's endpoints coincide at t = " + k.to_string(*r) +

@@ -57,8 +57,9 @@ struct Batches_run {
 template <class Run, class K, class Take>
 Batches_run<typename K::Time> run_batches(Run& run, const K& k, const Segment_run_options& o, Take take) {
   const auto progress = progress_every_few_seconds("kvd simulate");
-  std::optional<mpq_class> limit = run.scene().end;
-  if (o.until && (!limit || *o.until < *limit)) limit = o.until;
+  const std::optional<mpq_class> limit = run.scene().limit(o.until);
+  std::optional<typename K::Time> until;
+  if (o.until) until = k.time(from_rational<typename K::FT>(*o.until));
   const auto at_limit = [&](Batches_run<typename K::Time>& r, const char* why) {
     r.stopped = why;
     r.time_reached = limit ? k.time(from_rational<typename K::FT>(*limit)) : run.now();
@@ -66,7 +67,7 @@ Batches_run<typename K::Time> run_batches(Run& run, const K& k, const Segment_ru
   };
   Batches_run<typename K::Time> r;
   while (const auto next = run.next_event_time()) {
-    if (o.until && k.compare(*next, k.time(from_rational<typename K::FT>(*o.until))) > 0) return at_limit(r, "limit");
+    if (until && k.compare(*next, *until) > 0) return at_limit(r, "limit");
     if (r.failures >= o.max_events) {
       r.stopped = "events";
       r.time_reached = run.now();

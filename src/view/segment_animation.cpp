@@ -63,7 +63,7 @@ Segment_film segment_film(const segments::Segment_scene& s, const Segment_film_o
   // The film runs to the time limit when the run reached it, else to its
   // last batch; with no batch, to the start when the run stopped for its
   // events, or a second on when it ran out of them with no limit.
-  const std::optional<mpq_class> limit = o.until ? o.until : s.end;
+  const std::optional<mpq_class> limit = s.limit(o.until);
   mpq_class end = reached_limit ? s.start + 1 : s.start;
   if (reached_limit && limit) end = *limit;
   else if (!batches.empty()) end = batches.back().time.lower();  // the time itself when rational

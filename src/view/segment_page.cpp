@@ -52,9 +52,7 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   const Exact_kernel k;
   Run run(k, s, false);
   const mpq_class within = (s.end ? *s.end - s.start : mpq_class(1)) / 1000;
-  // The time limit: the earlier of the scene's end and --until.
-  std::optional<mpq_class> limit = s.end;
-  if (o.until && (!limit || *o.until < *limit)) limit = o.until;
+  const std::optional<mpq_class> limit = s.limit(o.until);
   // The instant drawn for the interval from `from` to the next failure.
   const auto inside = [&](const Exact_time& from, const std::optional<Exact_time>& to) {
     return drawn_after(from, to, limit, within);

@@ -69,6 +69,11 @@ public:
   // Endpoint e = 2 s + k as polynomials in t, and at an instant.
   Motion_point3 endpoint(std::size_t e) const;
   Point3 endpoint_at(std::size_t e, const Q& t) const;
+  // The time limit of a run to `until` (none: to the end): the earlier of
+  // the two; none when there is neither.
+  std::optional<Q> limit(const std::optional<Q>& until) const {
+    return until && (!end || *until < *end) ? until : end;
+  }
 
   friend bool operator==(const Segment_scene& a, const Segment_scene& b) {
     return a.name == b.name && a.start == b.start && a.end == b.end && a.seed == b.seed && a.order == b.order &&

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "kvd/detail/kernel/zpoly.hpp"
 #include "kvd/kernel/exact_time.hpp"
 #include "kvd/scene/scene.hpp"
 
@@ -17,6 +18,10 @@ namespace kvd::scene {
 // p(t) = 0, roots of even multiplicity included; nothing when p never
 // vanishes there. p must not be the zero polynomial.
 std::optional<Exact_time> first_zero(const QPoly& p, const Q& start, const std::optional<Q>& end);
+
+// The gcd of the polynomials, whose real roots are the instants at which
+// they all vanish together: primitive, in integers; zero when all are zero.
+zpoly::ZPoly common_divisor(const std::vector<QPoly>& ps);
 
 // The first t in (start, end] at which the polynomials all vanish together
 // (the real roots of their gcd); nothing when they never do. Not all zero.
