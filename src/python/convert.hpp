@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -119,6 +120,27 @@ inline py::custom_type_setup made_by_the_module() {
     type->ht_type.tp_new = [](PyTypeObject* t, PyObject*, PyObject*) -> PyObject* {
       PyErr_Format(PyExc_TypeError, "%s objects are made by the module's functions, not directly", t->tp_name);
       return nullptr;
+    };
+  });
+}
+
+// For a class Python constructs: an object made by Class.__new__(Class)
+// without __init__ holds nothing, and its methods would read through a null
+// pointer. Reading any attribute of one that is not a dunder raises
+// TypeError instead.
+inline py::custom_type_setup made_by_init() {
+  return py::custom_type_setup([](PyHeapTypeObject* type) {
+    type->ht_type.tp_getattro = [](PyObject* self, PyObject* name) -> PyObject* {
+      auto* inst = reinterpret_cast<py::detail::instance*>(self);
+      if (!inst->get_value_and_holder().holder_constructed()) {
+        const char* n = PyUnicode_Check(name) ? PyUnicode_AsUTF8(name) : nullptr;
+        if (n == nullptr || std::string_view(n).substr(0, 2) != "__") {
+          PyErr_Format(PyExc_TypeError, "this %s object was not initialised: make one with %s(...)",
+                       Py_TYPE(self)->tp_name, Py_TYPE(self)->tp_name);
+          return nullptr;
+        }
+      }
+      return PyObject_GenericGetAttr(self, name);
     };
   });
 }

@@ -266,7 +266,7 @@ PYBIND11_MODULE(kvd, m) {
         "The KVD just after t (default: the scene's start), exactly: node counts, height, structure_hash,\n"
         "and with view=(x, y, z) the fragments back to front with Fraction coordinates.");
 
-  py::class_<Any_kinetic>(m, "Kinetic", "The kinetic KVD, stepped event by event")
+  py::class_<Any_kinetic>(m, "Kinetic", "The kinetic KVD, stepped event by event", kvd::python::made_by_init())
       .def(py::init(&make_kinetic), py::arg("scene"), py::arg("kernel") = "exact", py::arg("events") = 100,
            py::arg("validate") = "every", py::arg("until") = py::none())
       .def("advance", &Any_kinetic::advance, "Processes the next batch and returns it, or None when the run stops.")

@@ -118,7 +118,8 @@ void bind_paper_segments(py::module_& m) {
   py::class_<Paper_segments>(m, "PaperSegments",
                              "The segment BSP run on seed 003's own certificates (transient nodes, endpoints'\n"
                              "neighbours, flips) with exact failure times, in the exact kernel; each batch replays the\n"
-                             "subtrees its certificates name (kvd simulate --certificates paper)")
+                             "subtrees its certificates name (kvd simulate --certificates paper)",
+                             made_by_init())
       .def(py::init<const segments::Segment_scene&, std::size_t, bool, const py::handle&>(), py::arg("scene"),
            py::arg("events") = 100, py::arg("validate") = true, py::arg("until") = py::none())
       .def("advance", &Paper_segments::advance,

@@ -205,7 +205,8 @@ void bind_segments(py::module_& m) {
         "section 2.1): its cuts by kind, nodes, leaves, height, the tree as nested parentheses (as kvd build\n"
         "--tree prints it) and its SHA-256 (structure_hash), the augmented tree of section 3.1.4 (augmented, as\n"
         "kvd build --augmented prints it); segments and crossings at t.");
-  py::class_<Any_segment_kinetic>(m, "KineticSegments", "The kinetic BSP of moving segments (seed 003), stepped batch by batch")
+  py::class_<Any_segment_kinetic>(m, "KineticSegments", "The kinetic BSP of moving segments (seed 003), stepped batch by batch",
+                                   made_by_init())
       .def(py::init(&make_kinetic), py::arg("scene"), py::arg("kernel") = "exact", py::arg("events") = 100,
            py::arg("validate") = true, py::arg("update") = "local", py::arg("until") = py::none())
       .def("advance", &Any_segment_kinetic::advance,

@@ -121,6 +121,18 @@ def test_scenes_are_made_by_the_module_only():
             cls.__new__(cls)
 
 
+def test_runs_not_initialised_refuse_to_be_read():
+    # Class.__new__(Class) makes an object __init__ never filled.
+    for cls in (kvd.Kinetic, kvd.KineticSegments, kvd.PaperSegments):
+        empty = cls.__new__(cls)
+        for name in ("advance", "now", "summary", "events"):
+            with pytest.raises(TypeError, match="not initialised"):
+                getattr(empty, name)
+        assert isinstance(repr(empty), str)
+    s = kvd.load_segments(segment_file("two-crossing.json"))
+    assert kvd.PaperSegments(s).now["time"] == "0"
+
+
 def test_numbers_of_thousands_of_digits_cross_both_ways(tmp_path):
     # Python converts at most 4,300 decimal digits to or from text.
     big = 10**5000
