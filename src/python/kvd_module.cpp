@@ -246,14 +246,14 @@ PYBIND11_MODULE(kvd, m) {
 
   m.def(
       "load_scene",
-      [](const std::string& path, const py::object& seed) {
+      [](const py::object& path, const py::object& seed) {
         kvd::scene::Load_options o;
         if (!seed.is_none()) o.seed = kvd::python::to_unsigned(seed, "seed");
-        return kvd::scene::load_scene(path, o);
+        return kvd::scene::load_scene(kvd::python::to_path(path), o);
       },
       py::arg("path"), py::arg("seed") = py::none(),
-      "Reads a kvd-scene/1 file (seed: another priority seed); SceneError (a ValueError) names the place\n"
-      "of a bad input.");
+      "Reads a kvd-scene/1 file (path: a str or os.PathLike; seed: another priority seed); SceneError\n"
+      "(a ValueError) names the place of a bad input.");
   m.def(
       "scene",
       [](const py::list& objects, const py::object& start, const py::object& end, std::uint64_t seed) {

@@ -192,14 +192,14 @@ void bind_segments(py::module_& m) {
       });
   m.def(
       "load_segments",
-      [](const std::string& path, const py::object& seed) {
+      [](const py::object& path, const py::object& seed) {
         segments::Segment_load_options o;
         if (!seed.is_none()) o.seed = to_unsigned(seed, "seed");
-        return segments::load_segments(path, o);
+        return segments::load_segments(to_path(path), o);
       },
       py::arg("path"), py::arg("seed") = py::none(),
-      "Reads a kvd-segments/1 file (seed: another priority seed); SceneError (a ValueError) names the place\n"
-      "of a bad input.");
+      "Reads a kvd-segments/1 file (path: a str or os.PathLike; seed: another priority seed); SceneError\n"
+      "(a ValueError) names the place of a bad input.");
   m.def("build_segments", &build, py::arg("scene"), py::arg("t") = py::none(),
         "The cylindrical BSP of the segments just after t (default: the scene's start), exactly (seed 003,\n"
         "section 2.1): its cuts by kind, nodes, leaves, height, the tree as nested parentheses (as kvd build\n"

@@ -5,6 +5,7 @@ coordinates, and the batches of a kinetic run. Run by CTest python_module
 import hashlib
 import json
 import os
+import pathlib
 import subprocess
 from fractions import Fraction
 
@@ -113,6 +114,23 @@ def test_seeds_and_kernel_names_are_checked_as_on_the_command_line():
         with pytest.raises(ValueError, match="mpfr:BITS"):
             kvd.Kinetic(s, kernel=kernel)
     assert kvd.Kinetic(s, kernel="mpfr:64").next_event_time is not None
+
+
+def test_paths_are_any_os_pathlike_and_a_nul_in_one_is_refused(tmp_path):
+    assert kvd.load_scene(pathlib.Path(scene_file("two-triangles.json"))).triangles == 2
+    assert kvd.load_segments(pathlib.Path(segment_file("two-crossing.json"))).segments == 2
+    # A name that is not UTF-8, as os.listdir gives it (os.fsdecode).
+    odd = tmp_path / os.fsdecode(b"\xff.json")
+    odd.write_bytes(open(segment_file("two-crossing.json"), "rb").read())
+    assert kvd.load_segments(str(odd)).segments == 2
+    for load, name in ((kvd.load_scene, scene_file("two-triangles.json")),
+                       (kvd.load_segments, segment_file("two-crossing.json"))):
+        # The C++ file functions would end the path at the NUL and read another file.
+        with pytest.raises(ValueError, match="NUL"):
+            load(name + "\0.bak")
+        for bad in (name.encode(), 3, None):
+            with pytest.raises(TypeError, match="path"):
+                load(bad)
 
 
 def test_scenes_are_made_by_the_module_only():
