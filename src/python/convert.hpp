@@ -83,13 +83,20 @@ inline std::string to_path(const py::handle& path) {
   return bytes;
 }
 
+// ValueError, naming the instant `what`, unless `at` lies in the scene's
+// time span [start, end] (no end: unbounded).
+inline void check_in_span(const mpq_class& at, const std::string& what, const mpq_class& start,
+                          const std::optional<mpq_class>& end) {
+  if (at < start || (end && at > *end))
+    throw py::value_error(what + " = " + at.get_str() + " is outside the scene's time span [" + start.get_str() + ", " +
+                          (end ? end->get_str() : "no end") + "]");
+}
+
 // The instant t (None: the scene's start) of a build, within the scene's
 // time span as on the command line (ValueError otherwise).
 inline mpq_class instant_in_span(const py::handle& t, const mpq_class& start, const std::optional<mpq_class>& end) {
   const mpq_class at = t.is_none() ? start : to_mpq(t);
-  if (at < start || (end && at > *end))
-    throw py::value_error("t = " + at.get_str() + " is outside the scene's time span [" + start.get_str() + ", " +
-                          (end ? end->get_str() : "no end") + "]");
+  check_in_span(at, "t", start, end);
   return at;
 }
 
@@ -178,15 +185,18 @@ py::dict segment_tree_dict(const segments::Cylindrical_bsp& b);
 // with the changes made so far) at `at`, for a run now at `now`: the motion
 // (SEGMENT_FORMAT.md's motion object, numbers as text, int or Fraction),
 // checked at `at` before the run moves there, so that a change refused
-// leaves the run where it was. ValueError when `at` is before now or the
-// motion does not keep the segment where it is then, SceneError naming the
-// place of a bad motion.
+// leaves the run where it was. ValueError when `at` is before now or past
+// the span's end (where the run would stop, and take the change, at the
+// end) or the motion does not keep the segment where it is then, SceneError
+// naming the place of a bad motion.
 template <class K>
 segments::Segment_motion motion_change(const K& k, const typename K::Time& now, const segments::Segment_scene& scene,
                                        std::size_t segment, const py::handle& motion, const py::handle& at) {
-  const auto t = k.time(from_rational<typename K::FT>(to_mpq(at)));
+  const mpq_class q = to_mpq(at);
+  const auto t = k.time(from_rational<typename K::FT>(q));
   if (k.compare(t, now) < 0)
     throw py::value_error("set_motion: at = " + k.to_string(t) + " is before the run's now, " + k.to_string(now));
+  check_in_span(q, "set_motion: at", scene.start, scene.end);
   const py::object text = py::module_::import("json").attr("dumps")(
       motion, py::arg("default") = py::module_::import("builtins").attr("str"));
   segments::Segment_motion m = segments::read_segment_motion(text.cast<std::string>(), "set_motion");

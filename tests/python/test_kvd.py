@@ -367,3 +367,22 @@ def test_segment_set_motion_rejects_bad_motions(run):
     with pytest.raises(ValueError, match="before the run's now"):
         k.set_motion(1, {"translation": [0, Fraction(-1, 4)]}, Fraction(1, 4))
     assert k.summary["motion_changes"] == 0
+
+
+def test_set_motion_refuses_an_instant_past_the_span_and_leaves_the_run():
+    # The scenes end at 7/2 and 10. The segment runs moved to the end and took
+    # the change there; the triangle run refused it.
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    sinking = {"translation": [0, [0, -1]]}  # its own motion: where it is at any instant
+    for run in (kvd.KineticSegments, kvd.PaperSegments):
+        k = run(s)
+        for at in (4, 100):
+            with pytest.raises(ValueError, match="outside the scene's time span"):
+                k.set_motion(1, sinking, at)
+        assert k.now["time"] == "0" and k.events == [] and k.summary["motion_changes"] == 0
+        k.set_motion(1, sinking, Fraction(7, 2))  # the end is in the span
+        assert k.now["time"] == "7/2" and k.summary["motion_changes"] == 1
+    k = kvd.Kinetic(kvd.load_scene(scene_file("two-triangles.json")))
+    with pytest.raises(ValueError, match="not in"):
+        k.set_motion(1, [[0], [0], [0]], 11)
+    assert k.now["time"] == "0" and k.events == [] and k.summary["motion_changes"] == 0
