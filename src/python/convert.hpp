@@ -100,6 +100,16 @@ inline mpq_class instant_in_span(const py::handle& t, const mpq_class& start, co
   return at;
 }
 
+// The instant t as the kernel's time, not before the run's `now`:
+// ValueError naming it `what` otherwise (a run does not go back).
+template <class K>
+typename K::Time not_before_now(const K& k, const typename K::Time& now, const typename K::FT& t, const std::string& what) {
+  typename K::Time time = k.time(t);
+  if (k.compare(time, now) < 0)
+    throw py::value_error(what + " = " + k.to_string(time) + " is before the run's now, " + k.to_string(now));
+  return time;
+}
+
 // A list or tuple as a list: TypeError naming `what` for anything else
 // (a string is not a list of its characters here).
 inline py::list to_list(const py::handle& x, const char* what) {
@@ -193,9 +203,7 @@ template <class K>
 segments::Segment_motion motion_change(const K& k, const typename K::Time& now, const segments::Segment_scene& scene,
                                        std::size_t segment, const py::handle& motion, const py::handle& at) {
   const mpq_class q = to_mpq(at);
-  const auto t = k.time(from_rational<typename K::FT>(q));
-  if (k.compare(t, now) < 0)
-    throw py::value_error("set_motion: at = " + k.to_string(t) + " is before the run's now, " + k.to_string(now));
+  const auto t = not_before_now(k, now, from_rational<typename K::FT>(q), "set_motion: at");
   check_in_span(q, "set_motion: at", scene.start, scene.end);
   const py::object text = py::module_::import("json").attr("dumps")(
       motion, py::arg("default") = py::module_::import("builtins").attr("str"));

@@ -127,7 +127,11 @@ public:
     const auto* b = kds_.advance();
     return b ? py::object(batch(*b)) : py::object(py::none());
   }
-  std::size_t advance_to(const py::handle& t) override { return kds_.advance_to(kvd::from_rational<typename K::FT>(to_mpq(t))); }
+  std::size_t advance_to(const py::handle& t) override {
+    const auto at = kvd::from_rational<typename K::FT>(to_mpq(t));
+    kvd::python::not_before_now(k_, kds_.now(), at, "advance_to: t");
+    return kds_.advance_to(at);
+  }
   void set_motion(std::size_t object, const py::list& translation, const py::handle& at) override {
     if (translation.size() != 3) throw py::value_error("a translation is three polynomials (x, y, z)");
     kvd::scene::Motion m;
@@ -270,7 +274,8 @@ PYBIND11_MODULE(kvd, m) {
       .def(py::init(&make_kinetic), py::arg("scene"), py::arg("kernel") = "exact", py::arg("events") = 100,
            py::arg("validate") = "every", py::arg("until") = py::none())
       .def("advance", &Any_kinetic::advance, "Processes the next batch and returns it, or None when the run stops.")
-      .def("advance_to", &Any_kinetic::advance_to, py::arg("t"), "Processes every batch at a time <= t; how many.")
+      .def("advance_to", &Any_kinetic::advance_to, py::arg("t"),
+           "Processes every batch at a time <= t; how many (ValueError for a t before now).")
       .def("set_motion", &Any_kinetic::set_motion, py::arg("object"), py::arg("translation"), py::arg("at"),
            "A flight-plan change: the object translates by the given polynomials from the instant `at` on.")
       .def_property_readonly("events", &Any_kinetic::events, "The batches processed so far.")

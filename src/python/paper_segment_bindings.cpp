@@ -31,7 +31,7 @@ public:
   }
   std::size_t advance_to(const py::handle& t) {
     std::size_t n = 0;
-    for (const auto& b : run_.advance_to(Exact_time(to_mpq(t)))) {
+    for (const auto& b : run_.advance_to(not_before_now(k_, run_.now(), to_mpq(t), "advance_to: t"))) {
       batches_.push_back(batch(b));
       ++n;
     }
@@ -129,7 +129,8 @@ void bind_paper_segments(py::module_& m) {
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),
-           "Processes every batch at a time <= t and moves to t (not past the span's end); how many.")
+           "Processes every batch at a time <= t and moves to t (not past the span's end); how many (ValueError\n"
+           "for a t before now).")
       .def("set_motion", &Paper_segments::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change, as KineticSegments.set_motion takes it: the batches up to `at` first, then\n"
            "the segment moves by `motion` from there on, kept where it is at `at`. Only the certificates naming\n"

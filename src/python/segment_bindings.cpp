@@ -84,7 +84,7 @@ public:
     return batches_.back();
   }
   std::size_t advance_to(const py::handle& t) override {
-    const auto at = k_.time(from_rational<typename K::FT>(to_mpq(t)));
+    const auto at = not_before_now(k_, kin_.now(), from_rational<typename K::FT>(to_mpq(t)), "advance_to: t");
     std::size_t n = 0;
     for (auto& b : kin_.advance_to(at)) {
       batches_.push_back(batch(std::move(b)));
@@ -213,7 +213,8 @@ void bind_segments(py::module_& m) {
            "Processes the next batch and returns it, or None when nothing fails any more, `events` failures\n"
            "were processed, or the next batch is after `until`.")
       .def("advance_to", &Any_segment_kinetic::advance_to, py::arg("t"),
-           "Processes every batch at a time <= t and moves to t (not past the span's end); how many.")
+           "Processes every batch at a time <= t and moves to t (not past the span's end); how many (ValueError\n"
+           "for a t before now).")
       .def("set_motion", &Any_segment_kinetic::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change: the batches up to `at` first, then the segment moves by `motion` from there on,\n"
            "given as SEGMENT_FORMAT.md's motion object ({'translation': [x, y]}, {'matrix': ...} or\n"

@@ -386,3 +386,17 @@ def test_set_motion_refuses_an_instant_past_the_span_and_leaves_the_run():
     with pytest.raises(ValueError, match="not in"):
         k.set_motion(1, [[0], [0], [0]], 11)
     assert k.now["time"] == "0" and k.events == [] and k.summary["motion_changes"] == 0
+
+
+def test_advance_to_refuses_an_instant_before_now_and_leaves_the_run():
+    # It returned 0 as though nothing were due.
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    triangles = kvd.load_scene(scene_file("uniform-scale-25.json"))
+    for k in (kvd.KineticSegments(s), kvd.PaperSegments(s), kvd.Kinetic(triangles, events=40)):
+        k.advance_to(Fraction(1, 5))
+        now, events = k.now, k.events
+        assert now["time"] != "0"
+        with pytest.raises(ValueError, match="before the run's now"):
+            k.advance_to(0)
+        assert k.now == now and k.events == events
+        assert k.advance_to(Fraction(1, 5)) == 0  # now, or later
