@@ -13,6 +13,8 @@
 #include <type_traits>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/float_kernel.hpp"
@@ -30,9 +32,17 @@ namespace py = pybind11;
 // Numbers cross in base 16: Python (3.11 on) refuses to convert integers of
 // more than 4,300 decimal digits to or from text, but not in base 16.
 
-// Any number Python's Fraction takes (int, Fraction, float exactly, "1/3", "0.25").
+// Any number Python's Fraction takes (int, Fraction, "1/3", "0.25", and a
+// float as its exact binary value: 0.1 is 3602879701896397/2^55). inf and
+// nan, which have none, are a ValueError.
 inline mpq_class to_mpq(const py::handle& x) {
-  const py::object fraction = py::module_::import("fractions").attr("Fraction")(x);
+  py::object fraction;
+  try {
+    fraction = py::module_::import("fractions").attr("Fraction")(x);
+  } catch (const py::error_already_set& e) {
+    if (!e.matches(PyExc_OverflowError)) throw;  // Fraction(inf); Fraction(nan) is a ValueError already
+    throw py::value_error("a number is finite, not " + py::repr(x).cast<std::string>());
+  }
   const py::object hex = py::module_::import("builtins").attr("format");
   mpq_class q(hex(fraction.attr("numerator"), "x").cast<std::string>() + "/" +
                   hex(fraction.attr("denominator"), "x").cast<std::string>(),
@@ -191,9 +201,37 @@ void bind_paper_segments(py::module_& m);
 // height, its text and SHA-256 (segment_bindings.cpp).
 py::dict segment_tree_dict(const segments::Cylindrical_bsp& b);
 
+// A motion object as the file format's JSON: dicts (str keys), lists,
+// tuples, str (a number's text, read by the format's grammar), None and
+// bool as they are, any other value a number as to_mpq takes it, written
+// exactly (json.dumps would write a float's shortest decimal, 11/10 for
+// 1.1, and no int of more than 4,300 digits). The depth is bounded at the
+// format's 64 levels, for a list that holds itself.
+inline nlohmann::ordered_json motion_json(const py::handle& x, int depth = 0) {
+  using Json = nlohmann::ordered_json;
+  if (depth > 64) throw py::value_error("set_motion: the motion is nested deeper than 64 levels");
+  if (x.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(x)) return x.cast<bool>();
+  if (py::isinstance<py::str>(x)) return x.cast<std::string>();
+  if (py::isinstance<py::dict>(x)) {
+    Json out = Json::object();
+    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(x)) {
+      if (!py::isinstance<py::str>(key)) throw py::type_error("a motion's keys are str, not " + type_name(key));
+      out[key.cast<std::string>()] = motion_json(value, depth + 1);
+    }
+    return out;
+  }
+  if (py::isinstance<py::list>(x) || py::isinstance<py::tuple>(x)) {
+    Json out = Json::array();
+    for (const auto& item : x) out.push_back(motion_json(item, depth + 1));
+    return out;
+  }
+  return to_mpq(x).get_str();
+}
+
 // A flight-plan change of segment `segment` of `scene` (the run's scene,
 // with the changes made so far) at `at`, for a run now at `now`: the motion
-// (SEGMENT_FORMAT.md's motion object, numbers as text, int or Fraction),
+// (SEGMENT_FORMAT.md's motion object, numbers as motion_json takes them),
 // checked at `at` before the run moves there, so that a change refused
 // leaves the run where it was. ValueError when `at` is before now or past
 // the span's end (where the run would stop, and take the change, at the
@@ -205,9 +243,7 @@ segments::Segment_motion motion_change(const K& k, const typename K::Time& now, 
   const mpq_class q = to_mpq(at);
   const auto t = not_before_now(k, now, from_rational<typename K::FT>(q), "set_motion: at");
   check_in_span(q, "set_motion: at", scene.start, scene.end);
-  const py::object text = py::module_::import("json").attr("dumps")(
-      motion, py::arg("default") = py::module_::import("builtins").attr("str"));
-  segments::Segment_motion m = segments::read_segment_motion(text.cast<std::string>(), "set_motion");
+  segments::Segment_motion m = segments::read_segment_motion(motion_json(motion).dump(), "set_motion");
   std::optional<typename K::Time> end;
   if (scene.end) end = k.time(from_rational<typename K::FT>(*scene.end));
   segments::check_motion_change(k, scene, segment, m, t, end);

@@ -218,8 +218,9 @@ void bind_segments(py::module_& m) {
       .def("set_motion", &Any_segment_kinetic::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change: the batches up to `at` first, then the segment moves by `motion` from there on,\n"
            "given as SEGMENT_FORMAT.md's motion object ({'translation': [x, y]}, {'matrix': ...} or\n"
-           "{'endpoints': ...}; None: static), numbers as text, int or Fraction, polynomials in t as lists of\n"
-           "coefficients. It must keep the segment where it is at `at`, an instant from now to the span's end.\n"
+           "{'endpoints': ...}; None: static), numbers as text, int, Fraction or float (its exact binary value),\n"
+           "polynomials in t as lists of coefficients. It must keep the segment where it is at `at`, an instant\n"
+           "from now to the span's end.\n"
            "Only the certificates naming the segment are decided again (Lemma 3.1); whether the tree changed.\n"
            "ValueError (SceneError for a bad motion, naming its place) otherwise.")
       .def_property_readonly("events", &Any_segment_kinetic::events, "The batches processed so far.")

@@ -400,3 +400,23 @@ def test_advance_to_refuses_an_instant_before_now_and_leaves_the_run():
             k.advance_to(0)
         assert k.now == now and k.events == events
         assert k.advance_to(Fraction(1, 5)) == 0  # now, or later
+
+
+@pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
+def test_a_float_is_its_exact_binary_value_in_motions_as_everywhere(run):
+    # The module's one rule: a float is Fraction(float). A segment's motion
+    # read 1.1 as the decimal 11/10 (json.dumps wrote its shortest text), and
+    # refused an int of more than 4,300 digits (Python's text limit).
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    k = run(s)
+    k.set_motion(1, {"translation": [0, [0, -1.1]]}, 0)
+    # The sinker meets the floor's endpoint when it has sunk by 3.
+    assert [b["time"] for b in iter(k.advance, None)] == [str(3 / Fraction(1.1))]
+    assert kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, 2]]}], start=0.1).start == Fraction(0.1)
+    run(s).set_motion(1, {"translation": [0, [0, Fraction(-1, 10**5000)]]}, 0)
+    # inf and nan have no exact value: ValueError (inf was an OverflowError).
+    for bad in (float("inf"), float("nan")):
+        with pytest.raises(ValueError):
+            kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, 2]]}], end=bad)
+        with pytest.raises(ValueError):
+            run(s).set_motion(1, {"translation": [0, [0, bad]]}, 0)
