@@ -125,6 +125,7 @@ public:
 
   py::object advance() override {
     const auto* b = kds_.advance();
+    if (!b) ended_ = true;
     return b ? py::object(batch(*b)) : py::object(py::none());
   }
   std::size_t advance_to(const py::handle& t) override {
@@ -179,8 +180,14 @@ public:
     d["validation_failures"] = r.validation_failures;
     d["valid"] = r.valid();
     d["structure_hash"] = r.structure_hash;
+    // Why the run stopped, once it has: advance() returned None, or a batch
+    // ended it (a collision, a stuck floating-point run). Until then the
+    // record holds its default, "exhausted", whatever will stop the run (no
+    // batch due may mean the limit or the event count), and set_motion may
+    // still give it batches.
     static const char* const stops[] = {"events", "limit", "exhausted", "collision", "stuck"};
-    d["stopped"] = kds_.stopped() ? py::object(py::str(stops[static_cast<int>(r.stopped)])) : py::object(py::none());
+    const bool stopped = ended_ || r.stopped != kvd::kinetic::Stop::exhausted;
+    d["stopped"] = stopped ? py::object(py::str(stops[static_cast<int>(r.stopped)])) : py::object(py::none());
     return d;
   }
 
@@ -205,6 +212,7 @@ private:
 
   K k_;
   kvd::Kinetic_kvd<K> kds_;
+  bool ended_ = false;  // advance() returned None
 };
 
 std::unique_ptr<Any_kinetic> make_kinetic(const Scene& s, const std::string& kernel, std::size_t events,

@@ -202,16 +202,20 @@ def test_floating_point_kernels_step_and_report_their_times():
         assert times == sorted(times) and len(times) > 5
 
 
+def standing(name, obj, at):
+    # Object `obj` of scene `name` stopped where it is at `at`: a constant
+    # translation, its value then.
+    motion = json.load(open(scene_file(name)))["objects"][obj]["motion"]["translation"]
+    return [[sum(Fraction(c) * at ** i for i, c in enumerate(p if isinstance(p, list) else [p]))] for p in motion]
+
+
 def test_set_motion_turns_an_object_back():
     s = kvd.load_scene(scene_file("uniform-scale-25.json"))
     k = kvd.Kinetic(s, events=40)
     k.advance_to(Fraction(1, 5))
     at = Fraction(1, 5)
     before = len(k.events)
-    # Object 3 stops where it is at 1/5: a constant translation, its value then.
-    text = json.load(open(scene_file("uniform-scale-25.json")))
-    motion = text["objects"][3]["motion"]["translation"]
-    still = [[sum(Fraction(c) * at ** i for i, c in enumerate(p if isinstance(p, list) else [p]))] for p in motion]
+    still = standing("uniform-scale-25.json", 3, at)
     k.set_motion(3, still, at)
     while k.advance() is not None:
         pass
@@ -420,3 +424,22 @@ def test_a_float_is_its_exact_binary_value_in_motions_as_everywhere(run):
             kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, 2]]}], end=bad)
         with pytest.raises(ValueError):
             run(s).set_motion(1, {"translation": [0, [0, bad]]}, 0)
+
+
+def test_summary_says_why_the_run_stopped_once_it_has():
+    # It named the record's default, "exhausted", as soon as no batch was due
+    # before the limit or the event count, while set_motion could still give
+    # the run batches; the reason came with the stop.
+    s = kvd.load_scene(scene_file("uniform-scale-25.json"))
+    at = Fraction(1, 5)
+    k = kvd.Kinetic(s, until=at)
+    assert k.advance_to(at) > 0 and k.next_event_time is None
+    assert k.summary["stopped"] is None
+    k.set_motion(3, standing("uniform-scale-25.json", 3, at), at)
+    assert k.summary["stopped"] is None
+    assert k.advance() is None and k.summary["stopped"] == "limit"
+    with pytest.raises(ValueError, match="has stopped"):
+        k.set_motion(3, standing("uniform-scale-25.json", 3, at), at)
+    k = kvd.Kinetic(s, events=3)
+    assert k.advance_to(1) == 3 and k.summary["stopped"] is None
+    assert k.advance() is None and k.summary["stopped"] == "events"
