@@ -72,11 +72,11 @@ inline std::uint64_t to_unsigned(const py::handle& x, const char* what) {
   }
 }
 
-// A file path: a str or an os.PathLike giving one (os.fspath), TypeError
-// otherwise (bytes too). It goes to the C++ file functions as the file
-// system's bytes (os.fsencode), so a name that is not UTF-8, as os.listdir
-// gives it, is found; a NUL, where those functions would end the path and
-// open another file, is a ValueError.
+// A file path as open() takes one: a str, bytes, or an os.PathLike giving
+// either (os.fspath), TypeError otherwise. It goes to the C++ file functions
+// as the file system's bytes (os.fsencode), so a name that is not UTF-8, as
+// os.listdir gives it, is found; a NUL, where those functions would end the
+// path and open another file, is a ValueError.
 inline std::string to_path(const py::handle& path) {
   const py::module_ os = py::module_::import("os");
   py::object s;
@@ -84,9 +84,8 @@ inline std::string to_path(const py::handle& path) {
     s = os.attr("fspath")(path);
   } catch (const py::error_already_set& e) {
     if (!e.matches(PyExc_TypeError)) throw;
-    throw py::type_error("a path is a str or an os.PathLike, not " + type_name(path));
+    throw py::type_error("a path is a str, bytes or an os.PathLike, not " + type_name(path));
   }
-  if (!py::isinstance<py::str>(s)) throw py::type_error("a path is a str or an os.PathLike giving one, not " + type_name(s));
   std::string bytes = os.attr("fsencode")(s).cast<std::string>();
   if (bytes.find('\0') != std::string::npos)
     throw py::value_error("the path " + py::repr(s).cast<std::string>() + " holds a NUL character");

@@ -264,7 +264,7 @@ PYBIND11_MODULE(kvd, m) {
         return kvd::scene::load_scene(kvd::python::to_path(path), o);
       },
       py::arg("path"), py::arg("seed") = py::none(),
-      "Reads a kvd-scene/1 file (path: a str or os.PathLike; seed: another priority seed); SceneError\n"
+      "Reads a kvd-scene/1 file (path: a str, bytes or os.PathLike; seed: another priority seed); SceneError\n"
       "(a ValueError) names the place of a bad input.");
   m.def(
       "scene",

@@ -198,7 +198,7 @@ void bind_segments(py::module_& m) {
         return segments::load_segments(to_path(path), o);
       },
       py::arg("path"), py::arg("seed") = py::none(),
-      "Reads a kvd-segments/1 file (path: a str or os.PathLike; seed: another priority seed); SceneError\n"
+      "Reads a kvd-segments/1 file (path: a str, bytes or os.PathLike; seed: another priority seed); SceneError\n"
       "(a ValueError) names the place of a bad input.");
   m.def("build_segments", &build, py::arg("scene"), py::arg("t") = py::none(),
         "The cylindrical BSP of the segments just after t (default: the scene's start), exactly (seed 003,\n"

@@ -128,7 +128,10 @@ def test_paths_are_any_os_pathlike_and_a_nul_in_one_is_refused(tmp_path):
         # The C++ file functions would end the path at the NUL and read another file.
         with pytest.raises(ValueError, match="NUL"):
             load(name + "\0.bak")
-        for bad in (name.encode(), 3, None):
+        with pytest.raises(ValueError, match="NUL"):
+            load(name.encode() + b"\0.bak")
+        assert load(os.fsencode(name)) is not None
+        for bad in (3, None):
             with pytest.raises(TypeError, match="path"):
                 load(bad)
 
