@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "convert.hpp"
+#include "segment_stepping.hpp"
 #include "kvd/detail/tree/digest.hpp"
 #include "kvd/segments/aeg_kinetic_bsp.hpp"
 
@@ -15,33 +16,32 @@ namespace kvd::python {
 namespace {
 
 class Paper_segments {
+  // Each batch processed, recorded (defined first: its type is deduced).
+  auto take() {
+    return [this](const segments::Aeg_kinetic_bsp<Exact_kernel>::Batch& b) { batches_.push_back(batch(b)); };
+  }
+
 public:
   Paper_segments(const segments::Segment_scene& s, std::size_t events, bool validate, const py::handle& until)
-      : run_(k_, s, validate), max_events_(events) {
-    if (!until.is_none()) until_ = Exact_time(to_mpq(until));
+      : run_(k_, s, validate), steps_{events, std::nullopt} {
+    if (!until.is_none()) steps_.until = Exact_time(to_mpq(until));
   }
 
   // The next batch, or None: nothing fails any more, the event limit is
   // reached, or the next failure is after `until`.
   py::object advance() {
-    const auto next = run_.next_event_time();
-    if (!next || failures_ >= max_events_ || (until_ && k_.compare(*next, *until_) > 0)) return py::none();
+    if (!steps_.allows(k_, run_.next_event_time())) return py::none();
     batches_.push_back(batch(run_.advance()));
     return batches_.back();
   }
   std::size_t advance_to(const py::handle& t) {
-    std::size_t n = 0;
-    for (const auto& b : run_.advance_to(not_before_now(k_, run_.now(), to_mpq(t), "advance_to: t"))) {
-      batches_.push_back(batch(b));
-      ++n;
-    }
-    return n;
+    return steps_.advance_to(k_, run_, not_before_now(k_, run_.now(), to_mpq(t), "advance_to: t"), take());
   }
   // A flight-plan change at `at`, after the batches up to it: the batch of
   // the certificates it fails at once (failing empty when none).
   py::dict set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) {
     const auto m = motion_change(k_, run_.now(), run_.scene(), segment, motion, at);
-    advance_to(at);
+    steps_.advance_for_change(k_, run_, Exact_time(to_mpq(at)), take());
     const auto b = run_.set_motion(segment, m);
     ++motion_changes_;
     return batch(b, false);
@@ -67,7 +67,7 @@ public:
   py::dict summary() const {
     py::dict d;
     d["batches"] = batches_.size();
-    d["failures"] = failures_;
+    d["failures"] = steps_.failures;
     d["motion_changes"] = motion_changes_;
     d["certificates"] = run_.certificates();
     d["validations"] = run_.validations();
@@ -78,7 +78,7 @@ public:
 private:
   // A batch as a dict; an event's is kept in `events`.
   py::dict batch(const segments::Aeg_kinetic_bsp<Exact_kernel>::Batch& b, bool event = true) {
-    if (event) failures_ += b.failing.size();
+    if (event) steps_.failures += b.failing.size();
     py::dict d;
     put_time(d, k_, b.time, "time");
     py::list failing;
@@ -107,8 +107,8 @@ private:
 
   const Exact_kernel k_;
   segments::Aeg_kinetic_bsp<Exact_kernel> run_;
-  std::size_t max_events_, failures_ = 0, motion_changes_ = 0;
-  std::optional<Exact_time> until_;
+  Segment_stepping<Exact_kernel> steps_;
+  std::size_t motion_changes_ = 0;
   std::vector<py::dict> batches_;
 };
 
@@ -129,8 +129,9 @@ void bind_paper_segments(py::module_& m) {
            "structure_hash), or None when nothing fails any more, `events` failures were processed, or the\n"
            "next batch is after `until`.")
       .def("advance_to", &Paper_segments::advance_to, py::arg("t"),
-           "Processes every batch at a time <= t and moves to t (not past the span's end); how many (ValueError\n"
-           "for a t before now).")
+           "Processes every batch at a time <= t that advance() would (within `events` and `until`), then\n"
+           "moves to the earlier of t and `until` (not past the span's end; stopped by `events`, it stays at\n"
+           "its last batch); how many (ValueError for a t before now).")
       .def("set_motion", &Paper_segments::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change, as KineticSegments.set_motion takes it: the batches up to `at` first, then\n"
            "the segment moves by `motion` from there on, kept where it is at `at`. Only the certificates naming\n"

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "convert.hpp"
+#include "segment_stepping.hpp"
 #include "kvd/detail/tree/digest.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/segments/augmented_bsp.hpp"
@@ -67,36 +68,35 @@ public:
 
 template <class K>
 class Segment_kinetic_of final : public Any_segment_kinetic {
+  // Each batch processed, recorded (defined first: its type is deduced).
+  auto take() {
+    return [this](typename Kinetic::Batch&& b) { batches_.push_back(batch(std::move(b))); };
+  }
+
 public:
   using Kinetic = segments::Kinetic_segment_bsp<K>;
   Segment_kinetic_of(const K& k, const Segment_scene& s, std::size_t events, bool validate,
                      segments::Segment_update update, const std::optional<mpq_class>& until)
-      : k_(k), kin_(k_, s, validate, update), max_events_(events) {
-    if (until) until_ = k_.time(from_rational<typename K::FT>(*until));
+      : k_(k), kin_(k_, s, validate, update), steps_{events, std::nullopt} {
+    if (until) steps_.until = k_.time(from_rational<typename K::FT>(*until));
   }
 
   // The next batch, or None: nothing fails any more, the event limit is
   // reached, or the next failure is after `until`.
   py::object advance() override {
-    const auto next = kin_.next_event_time();
-    if (!next || failures_ >= max_events_ || (until_ && k_.compare(*next, *until_) > 0)) return py::none();
+    if (!steps_.allows(k_, kin_.next_event_time())) return py::none();
     batches_.push_back(batch(kin_.advance()));
     return batches_.back();
   }
   std::size_t advance_to(const py::handle& t) override {
     const auto at = not_before_now(k_, kin_.now(), from_rational<typename K::FT>(to_mpq(t)), "advance_to: t");
-    std::size_t n = 0;
-    for (auto& b : kin_.advance_to(at)) {
-      batches_.push_back(batch(std::move(b)));
-      ++n;
-    }
-    return n;
+    return steps_.advance_to(k_, kin_, at, take());
   }
   // A flight-plan change at `at` (after the batches up to it): the motion
   // in the file format's forms, its numbers as text, int or Fraction.
   bool set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) override {
     const auto m = motion_change(k_, kin_.now(), kin_.scene(), segment, motion, at);
-    advance_to(at);
+    steps_.advance_for_change(k_, kin_, k_.time(from_rational<typename K::FT>(to_mpq(at))), take());
     const bool changed = kin_.set_motion(segment, m);
     ++motion_changes_;
     return changed;
@@ -122,7 +122,7 @@ public:
   py::dict summary() const override {
     py::dict d;
     d["batches"] = batches_.size();
-    d["failures"] = failures_;
+    d["failures"] = steps_.failures;
     d["motion_changes"] = motion_changes_;
     d["certificates"] = kin_.certificates();
     d["validations"] = kin_.validations();
@@ -136,7 +136,7 @@ public:
 
 private:
   py::dict batch(const typename Kinetic::Batch& b) {
-    failures_ += b.failing.size();
+    steps_.failures += b.failing.size();
     py::dict d;
     put_time(d, k_, b.time, "time");
     py::list failing;
@@ -160,8 +160,8 @@ private:
 
   K k_;
   Kinetic kin_;
-  std::size_t max_events_, failures_ = 0, motion_changes_ = 0;
-  std::optional<typename K::Time> until_;
+  Segment_stepping<K> steps_;
+  std::size_t motion_changes_ = 0;
   std::vector<py::dict> batches_;
 };
 
@@ -213,8 +213,9 @@ void bind_segments(py::module_& m) {
            "Processes the next batch and returns it, or None when nothing fails any more, `events` failures\n"
            "were processed, or the next batch is after `until`.")
       .def("advance_to", &Any_segment_kinetic::advance_to, py::arg("t"),
-           "Processes every batch at a time <= t and moves to t (not past the span's end); how many (ValueError\n"
-           "for a t before now).")
+           "Processes every batch at a time <= t that advance() would (within `events` and `until`), then\n"
+           "moves to the earlier of t and `until` (not past the span's end; stopped by `events`, it stays at\n"
+           "its last batch); how many (ValueError for a t before now).")
       .def("set_motion", &Any_segment_kinetic::set_motion, py::arg("segment"), py::arg("motion"), py::arg("at"),
            "A flight-plan change: the batches up to `at` first, then the segment moves by `motion` from there on,\n"
            "given as SEGMENT_FORMAT.md's motion object ({'translation': [x, y]}, {'matrix': ...} or\n"

@@ -410,6 +410,36 @@ def test_advance_to_refuses_an_instant_before_now_and_leaves_the_run():
 
 
 @pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
+def test_segment_runs_keep_their_bounds_in_advance_to_and_set_motion_as_in_advance(run):
+    # advance_to and set_motion went past `events` and `until`, which only
+    # advance() kept (Kinetic keeps them in all three).
+    s = kvd.load_segments(segment_file("random-100.json"))
+
+    def untimed(batches):
+        return [{k: v for k, v in b.items() if k != "update_seconds"} for b in batches]
+
+    stepped = run(s, events=7, validate=False)
+    batches = list(iter(stepped.advance, None))
+    assert batches and stepped.summary["failures"] >= 7
+    bounded = run(s, events=7, validate=False)
+    assert bounded.advance_to(s.end) == len(batches)
+    assert untimed(bounded.events) == untimed(batches) and bounded.now["time"] == batches[-1]["time"]
+    # Stopped by its events before `at`, the change is refused.
+    with pytest.raises(ValueError, match="after its 7 events"):
+        bounded.set_motion(1, None, s.end)  # segment 1 is static
+    assert bounded.summary["motion_changes"] == 0
+    # `until`: batches up to it, then the run moves there and no further.
+    until = Fraction(1, 100)
+    capped = run(s, events=10**6, validate=False, until=until)
+    capped.advance_to(s.end)
+    assert capped.now["time"] == str(until)
+    assert untimed(capped.events) == untimed(iter(run(s, events=10**6, validate=False, until=until).advance, None))
+    with pytest.raises(ValueError, match="after the run's until"):
+        capped.set_motion(1, None, 2 * until)
+    assert capped.now["time"] == str(until) and capped.summary["motion_changes"] == 0
+
+
+@pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
 def test_a_float_is_its_exact_binary_value_in_motions_as_everywhere(run):
     # The module's one rule: a float is Fraction(float). A segment's motion
     # read 1.1 as the decimal 11/10 (json.dumps wrote its shortest text), and
