@@ -25,6 +25,7 @@ namespace {
 const char* const build_help =
     "usage: kvd build SCENE [--time T] [--seed S] [--kernel exact|double|mpfr:BITS] [--no-filter]\n"
     "                 [--bsp] [--tree] [--augmented] [--json]\n"
+    "                 [--allow-intersecting]\n"
     "  --no-filter     exact kernel: every sign in exact arithmetic, without the\n"
     "                  interval filter in front (the same tree, slower)\n"
     "\n"
@@ -47,6 +48,8 @@ const char* const build_help =
     "                  null for double and mpfr), memory (the process's peak\n"
     "                  resident MiB, and that peak per node in bytes: the\n"
     "                  scene, the classifier's caches and the tree)\n"
+    "  --allow-intersecting\n"
+    "                  accept triangles that intersect at the start time\n"
     "\n"
     "For a kvd-segments/1 scene (told apart by its \"format\"): the cylindrical\n"
     "BSP of the segments (seed 003, section 2.1) just after T: segments,\n"

@@ -15,6 +15,7 @@ namespace {
 const char* const diff_help =
     "usage: kvd diff SCENE --kernel double|mpfr:BITS|exact [--events N] [--epsilon E]\n"
     "                [--seed S] [--json]\n"
+    "                [--allow-intersecting]\n"
     "\n"
     "Runs the exact kinetic KVD for N certificate failures (default 100) and the\n"
     "same simulation in the chosen kernel over the same span of time (the\n"
@@ -39,6 +40,8 @@ const char* const diff_help =
     "           \"structure_mismatches\": N, \"max_time_error\": X,\n"
     "           \"max_relative_time_error\": X, \"seconds_exact\": X,\n"
     "           \"seconds_inexact\": X, \"recovery\": {...}}\n"
+    "  --allow-intersecting\n"
+    "           accept triangles that intersect at the start time\n"
     "\n"
     "A segment scene (kvd-segments/1) runs the kinetic segment BSP the same way.\n"
     "Its events are the certificates of kvd certify: in place of \"certificate\" and\n"

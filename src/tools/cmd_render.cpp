@@ -17,6 +17,7 @@ namespace kvd::cli {
 namespace {
 const char* const render_help =
     "usage: kvd render SCENE --view X,Y,Z [--time T] [--seed S] [--cells] [--size PX] [--out FILE.svg|FILE.png]\n"
+    "                  [--allow-intersecting]\n"
     "       kvd render SEGMENTS [--time T] [--seed S] [--size PX] [--out FILE.svg]\n"
     "\n"
     "Builds the KVD just after time T (default: the scene's start) with the\n"
@@ -28,6 +29,8 @@ const char* const render_help =
     "  --cells     outline every fragment side by the cut that made it:\n"
     "              P-cuts red, E-cuts green, the triangle's own edges blue\n"
     "  --size PX   picture size in pixels (default 800)\n"
+    "  --allow-intersecting\n"
+    "              accept triangles that intersect at the start time\n"
     "  -o FILE     the same as --out FILE\n"
     "\n"
     "For a kvd-segments/1 scene (told apart by its \"format\"), draws the\n"

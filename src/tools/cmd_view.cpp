@@ -16,6 +16,7 @@ namespace {
 const char* const view_help =
     "usage: kvd view SCENE|REPORT --out FILE.html [--events N] [--until T]\n"
     "                [--view X,Y,Z] [--seed S] [--collisions reverse|stop]\n"
+    "                [--allow-intersecting]\n"
     "       kvd view TRACE --scene SCENE --out FILE.html [--seed S] [...]\n"
     "\n"
     "Runs the exact kinetic KVD (as kvd simulate, validating every batch) and\n"
@@ -41,6 +42,8 @@ const char* const view_help =
     "  --events N      stop after the batch holding the N-th failure (default 100)\n"
     "  --until T       stop after the last batch at a time <= T (exact)\n"
     "  --view X,Y,Z    the camera's first position (default: in front, above)\n"
+    "  --allow-intersecting\n"
+    "                  accept triangles that intersect at the start time\n"
     "\n"
     "For a kvd-segments/1 scene (told apart by its \"format\"): runs the exact\n"
     "kinetic cylindrical BSP (seed 003, as kvd simulate) and writes a page of\n"

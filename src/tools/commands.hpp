@@ -16,7 +16,7 @@
   X(simulate, "SCENE", "run the kinetic KVD (exact events, symbolic batches)")             \
   X(certify, "SCENE", "write an event-order certificate of the exact simulation")          \
   X(diff, "SCENE", "compare a floating-point simulation with the exact one")               \
-  X(bench, "SUITE", "benchmarks: accuracy, thesis, update (kvd bench --help)")       \
+  X(bench, "SUITE", "benchmarks: accuracy, thesis, update, cost, aeg, aeg-cost")       \
   X(import, "MESH", "an OBJ, OFF or PLY mesh as a scene, read exactly")                  \
   X(view, "SCENE", "an interactive HTML page of a run (3D, timeline, tree, diff)")
 
