@@ -18,6 +18,7 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/float_kernel.hpp"
+#include "kvd/detail/scene/span_check.hpp"
 #include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/segments/segment_io.hpp"
 
@@ -96,9 +97,8 @@ inline std::string to_path(const py::handle& path) {
 // time span [start, end] (no end: unbounded).
 inline void check_in_span(const mpq_class& at, const std::string& what, const mpq_class& start,
                           const std::optional<mpq_class>& end) {
-  if (at < start || (end && at > *end))
-    throw py::value_error(what + " = " + at.get_str() + " is outside the scene's time span [" + start.get_str() + ", " +
-                          (end ? end->get_str() : "no end") + "]");
+  if (!scene::in_span(at, start, end))
+    throw py::value_error(what + " = " + at.get_str() + " " + scene::outside_span_text(start, end));
 }
 
 // The instant t (None: the scene's start) of a build, within the scene's
@@ -146,15 +146,9 @@ auto with_kernel(const std::string& kernel, F f) {
   if (kernel == "exact") return f(Exact_kernel());
   if (kernel == "double") return f(Double_kernel());
   if (kernel.rfind("mpfr:", 0) == 0) {
-    // Digits only, as on the command line (stoul would take "+64", " 64",
-    // "64abc" and wrap "-1").
-    const std::string digits = kernel.substr(5);
-    const unsigned long bits = !digits.empty() && digits.size() <= 5 &&
-                                       digits.find_first_not_of("0123456789") == std::string::npos
-                                   ? std::stoul(digits)
-                                   : 0;
-    if (bits < 2 || bits > 65536) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536, not '" + kernel + "'");
-    return f(Mpfr_kernel(static_cast<unsigned>(bits)));
+    const std::optional<unsigned> bits = Mpfr_kernel::bits_named(kernel.substr(5));
+    if (!bits) throw py::value_error("mpfr:BITS needs BITS between 2 and 65536, not '" + kernel + "'");
+    return f(Mpfr_kernel(*bits));
   }
   throw py::value_error("kernel is 'exact', 'double' or 'mpfr:BITS', not '" + kernel + "'");
 }

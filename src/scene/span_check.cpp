@@ -53,4 +53,10 @@ std::string span_text(const std::optional<Q>& end) {
   return end ? "inside the time span" : "after the start time (the scene has no end)";
 }
 
+bool in_span(const Q& t, const Q& start, const std::optional<Q>& end) { return start <= t && (!end || t <= *end); }
+
+std::string outside_span_text(const Q& start, const std::optional<Q>& end) {
+  return "is outside the scene's time span [" + start.get_str() + ", " + (end ? end->get_str() : "no end") + "]";
+}
+
 }  // namespace kvd::scene

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "kvd/detail/scene/exact_number.hpp"
+#include "kvd/detail/scene/span_check.hpp"
 
 namespace kvd::cli {
 
@@ -67,9 +68,8 @@ segments::Segment_scene Scene_args::read_segments(const std::string& command, co
 
 void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const mpq_class& start,
                      const std::optional<mpq_class>& end) {
-  if (start <= t && (!end || t <= *end)) return;
-  throw Usage_error("kvd " + command + ": " + flag + " " + t.get_str() + " is outside the scene's time span [" +
-                    start.get_str() + ", " + (end ? end->get_str() : "no end") + "]");
+  if (!scene::in_span(t, start, end))
+    throw Usage_error("kvd " + command + ": " + flag + " " + t.get_str() + " " + scene::outside_span_text(start, end));
 }
 
 const std::array<mpq_class, 3>& Scene_args::required_view(const std::string& command) const {
@@ -126,10 +126,9 @@ std::vector<std::string> comma_list(const std::string& text) {
 }
 
 unsigned mpfr_bits(const std::string& command, const std::string& bits) {
-  if (bits.empty() || bits.size() > 5 || bits.find_first_not_of("0123456789") != std::string::npos ||
-      std::stoul(bits) < 2 || std::stoul(bits) > 65536)
-    throw Usage_error("kvd " + command + ": --kernel mpfr:BITS needs BITS between 2 and 65536");
-  return static_cast<unsigned>(std::stoul(bits));
+  const std::optional<unsigned> b = Mpfr_kernel::bits_named(bits);
+  if (!b) throw Usage_error("kvd " + command + ": --kernel mpfr:BITS needs BITS between 2 and 65536");
+  return *b;
 }
 
 std::function<void(std::size_t, std::size_t)> progress_every_few_seconds(std::string label, std::string of) {

@@ -60,6 +60,14 @@ public:
   explicit Mpfr_kernel(unsigned bits = default_bits);
   Mpfr_kernel(unsigned bits, const Mpfr_number& epsilon);
   unsigned bits() const { return bits_; }
+  // The precision that the text BITS of a kernel name "mpfr:BITS" names:
+  // digits only (no sign, space or suffix), 2 to 65536; none otherwise.
+  static std::optional<unsigned> bits_named(const std::string& text) {
+    if (text.empty() || text.size() > 5 || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    const unsigned long bits = std::stoul(text);
+    if (bits < 2 || bits > 65536) return std::nullopt;
+    return static_cast<unsigned>(bits);
+  }
 
 private:
   unsigned bits_;

@@ -34,4 +34,10 @@ std::string instant_text(const Exact_time& t);
 // start time (the scene has no end)".
 std::string span_text(const std::optional<Q>& end);
 
+// Whether t lies in the span [start, end] (no end: from start on), and how
+// a refusal of an instant outside it ends: "is outside the scene's time span
+// [0, 10]" ("[0, no end]").
+bool in_span(const Q& t, const Q& start, const std::optional<Q>& end);
+std::string outside_span_text(const Q& start, const std::optional<Q>& end);
+
 }  // namespace kvd::scene
