@@ -1,4 +1,7 @@
 // The command-line contract: --help, --version, and exit status 2 on misuse.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -416,6 +419,55 @@ TEST_CASE("outputs are written whole or not at all, and leave no temporary file"
     ++entries;
   }
   CHECK(entries == 1);
+}
+
+TEST_CASE("an output that is a device, a FIFO or a link is written through, not replaced", "[cli][trust]") {
+  // The temporary file was renamed over the target: over /dev/null, as root,
+  // it replaced the device node by a regular file.
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(KVD_BINARY_DIR) / "through-out";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path fifo = folder / "pipe";
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  // Held open for reading first, without blocking, so that the tool's open
+  // for writing does not wait; the scene fits in the pipe's buffer.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  REQUIRE(reader >= 0);
+  CHECK(run("generate segments-random --n 5 -o " + fifo.string()).status == 0);
+  std::string got;
+  std::array<char, 4096> buf{};
+  for (ssize_t n; (n = ::read(reader, buf.data(), buf.size())) > 0;) got.append(buf.data(), static_cast<std::size_t>(n));
+  ::close(reader);
+  CHECK(got.find("\"kvd-segments/1\"") != std::string::npos);
+  CHECK(fs::is_fifo(fifo));
+  const fs::path file = folder / "file.json", link = folder / "link.json";
+  std::ofstream(file) << "old contents\n";
+  fs::create_symlink(file.filename(), link);
+  CHECK(run("generate segments-random --n 5 -o " + link.string()).status == 0);
+  CHECK(fs::is_symlink(link));
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("\"kvd-segments/1\"") != std::string::npos);
+  // A folder is no file: status 2.
+  CHECK(run("generate segments-random --n 5 -o " + folder.string()).status == 2);
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(folder)) {
+    INFO(e.path().string());
+    CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
+    ++entries;
+  }
+  CHECK(entries == 3);
+}
+
+TEST_CASE("output lost on standard output is status 2", "[cli][trust]") {
+  // /dev/full refuses every write; the status was 0 and the output gone.
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";
+  for (const std::string& args : std::vector<std::string>{"generate segments-random --n 5", "info " + scene, "--help"}) {
+    INFO(args);
+    CHECK(run(args, "> /dev/full 2>/dev/null").status == 2);
+    CHECK(run(args, "> /dev/null 2>/dev/null").status == 0);
+  }
 }
 
 TEST_CASE("every command in kvd's table answers --help", "[cli]") {

@@ -3,7 +3,10 @@
 // exclusively (O_EXCL, O_NOFOLLOW: never an existing file or a link planted
 // there) under an unpredictable name, synced to disk, then renamed over the
 // target. The temporary file is removed on every error, and on SIGINT,
-// SIGTERM and SIGHUP while it exists.
+// SIGTERM and SIGHUP while it exists. A target that exists and is not a
+// regular file (a device such as /dev/null, a FIFO) is written directly:
+// renaming over it would replace the device node by a file. A symbolic link
+// to a file has that file replaced, not the link.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -61,23 +64,36 @@ std::string random_suffix() {
   return hex;
 }
 
-// Writes all of `text` to fd and syncs it; false on any error.
-bool write_all(int fd, const std::string& text) {
+// Writes all of `text` to fd, and syncs it if `sync`; false on any error.
+bool write_all(int fd, const std::string& text, bool sync) {
   for (std::size_t done = 0; done < text.size();) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return false;
     done += static_cast<std::size_t>(n);
   }
-  return fsync(fd) == 0;
+  return !sync || fsync(fd) == 0;
 }
 
 }  // namespace
 
 void write_atomically(const std::string& command, const std::string& path, const std::string& text) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
   const auto fail = [&](const std::string& why) { throw Usage_error("kvd " + command + ": cannot write " + path + " (" + why + ")"); };
+  struct stat st;
+  const bool exists = ::stat(path.c_str(), &st) == 0;
+  if (exists && !S_ISREG(st.st_mode)) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) fail(std::strerror(errno));
+    const bool written = write_all(fd, text, false);
+    const int write_errno = errno;
+    if (::close(fd) != 0 || !written) fail(std::strerror(written ? errno : write_errno));
+    return;
+  }
+  std::error_code link_error;
+  const std::filesystem::path target = exists && std::filesystem::is_symlink(path, link_error)
+                                           ? std::filesystem::canonical(path)
+                                           : std::filesystem::path(path);
+  const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
   std::string temp;
   int fd = -1;
   for (int attempt = 0; attempt < 8 && fd < 0; ++attempt) {
@@ -87,13 +103,13 @@ void write_atomically(const std::string& command, const std::string& path, const
   }
   if (fd < 0) fail("no unused temporary name");
   Pending_file guard(temp);
-  const bool written = write_all(fd, text);
+  const bool written = write_all(fd, text, true);
   const int write_errno = errno;
   if (::close(fd) != 0 || !written) {
     ::unlink(temp.c_str());
     fail(std::strerror(written ? errno : write_errno));
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+  if (std::rename(temp.c_str(), target.c_str()) != 0) {
     const int e = errno;
     ::unlink(temp.c_str());
     fail(std::strerror(e));

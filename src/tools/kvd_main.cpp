@@ -1,6 +1,7 @@
 // The kvd command-line tool. Exit status: 0 success, 1 failed check, 2 bad
 // input or usage (DESIGN.md section 6).
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -34,6 +35,16 @@ std::string usage() {
          "2 bad input or usage.\n";
 }
 
+// The command's status, unless what it wrote to standard output could not
+// all be written (a full disk, a closed pipe: /dev/full), which is status 2:
+// its output is lost.
+int written(const std::string& command, int status) {
+  std::cout.flush();
+  if (std::fflush(stdout) == 0 && std::cout && !std::ferror(stdout)) return status;
+  std::cerr << "kvd " << command << ": cannot write standard output\n";
+  return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -44,16 +55,16 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   if (command == "-h" || command == "--help") {
     std::cout << usage();
-    return 0;
+    return written("--help", 0);
   }
   if (command == "--version") {
     std::cout << "kvd " << kvd::version << "\n";
-    return 0;
+    return written("--version", 0);
   }
   kvd::cli::Args args(command, std::vector<std::string>(argv + 2, argv + argc));
   try {
     for (const auto& c : kvd::cli::commands)
-      if (command == c.name) return c.run(args);
+      if (command == c.name) return written(command, c.run(args));
     std::cerr << "kvd: unknown command or option '" << command << "' (see kvd --help)\n";
     return 2;
   } catch (const kvd::cli::Usage_error& e) {
