@@ -382,6 +382,20 @@ TEST_CASE("times outside the scene's span are refused", "[cli][trust]") {
   CHECK(run("certify " + scene + " --until 11 --out " + std::string(KVD_BINARY_DIR) + "/span.cert").status == 2);
 }
 
+TEST_CASE("numbers that double cannot hold are refused where double is used", "[cli][trust]") {
+  // An epsilon of 1e400 was infinity in the double kernel (the run stuck at
+  // its start with no message), and a view of 1e400 drew NaN.
+  const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/segments/two-crossing.json";
+  CHECK(run("simulate " + scene + " --kernel double --epsilon 1e400").status == 2);
+  CHECK(run("simulate " + scene + " --kernel double --epsilon 1e-400").status == 2);
+  CHECK(run("simulate " + scene + " --kernel mpfr:53 --epsilon 1e400").status != 2);  // MPFR holds it
+  CHECK(run("simulate " + scene + " --kernel double --epsilon 1e-12").status == 0);
+  const std::string triangles = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";
+  CHECK(run("render " + triangles + " --view 1e400,0,0").status == 2);
+  CHECK(run("render " + triangles + " --view 0,0,-1e400").status == 2);
+  CHECK(run("render " + triangles + " --view 10,10,10").status == 0);
+}
+
 TEST_CASE("vertices of no triangle cost nothing and change no tree", "[cli][trust]") {
   const std::string without = scene_file("used.json", R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
       R"(, {"vertices": [[0,5,0],[1,5,0],[0,5,1]], "triangles": [[0,1,2]], "motion": {"translation": [0, [0, -1], 0]}}]})");

@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -32,13 +33,27 @@ void Args::unknown(const std::string& arg) const {
   throw Usage_error("kvd " + command_ + ": unknown argument '" + arg + "' (see kvd " + command_ + " --help)");
 }
 
+namespace {
+
+// The eye of --view: the pictures are drawn in double, so each coordinate
+// must be within double's range (1e400 drew NaN).
+std::array<mpq_class, 3> view_option(const std::string& command, const std::string& text) {
+  std::array<mpq_class, 3> p = point_option(command, "--view", text);
+  for (const mpq_class& x : p)
+    if (!std::isfinite(x.get_d()))
+      throw Usage_error("kvd " + command + ": --view " + text + " lies beyond double's range, in which pictures are drawn");
+  return p;
+}
+
+}  // namespace
+
 bool Scene_args::take(Args& args, const std::string& a) {
   const std::string& command = args.command();
   if (a == "--json") json = true;
   else if (a == "--seed") load.seed = args.unsigned_value(a);
   else if (a == "--allow-intersecting") load.allow_intersecting = true;
   else if (a == "--time" && wants_time) time = exact_option(command, a, args.value(a));
-  else if (a == "--view" && wants_view) view = point_option(command, a, args.value(a));
+  else if (a == "--view" && wants_view) view = view_option(command, args.value(a));
   else if ((a == "-" || (!a.empty() && a[0] != '-')) && !path) path = a;
   else return false;
   return true;

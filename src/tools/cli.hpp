@@ -6,6 +6,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
@@ -182,7 +183,14 @@ auto with_kernel(const std::string& command, const std::string& name, F&& f,
     return f(Exact_kernel(filter));
   }
   if (!filter) throw Usage_error("kvd " + command + ": --no-filter needs --kernel exact");
-  if (name == "double") return f(epsilon ? Double_kernel(epsilon->get_d()) : Double_kernel());
+  if (name == "double") {
+    // An epsilon double cannot hold (1e400 is infinite, 1e-400 zero) would
+    // swamp every sign, or none.
+    if (epsilon && !(std::isfinite(epsilon->get_d()) && epsilon->get_d() > 0))
+      throw Usage_error("kvd " + command + ": --epsilon is beyond double's range (it rounds to " +
+                        (epsilon->get_d() > 0 ? "infinity" : "zero") + ")");
+    return f(epsilon ? Double_kernel(epsilon->get_d()) : Double_kernel());
+  }
   if (name.rfind("mpfr:", 0) == 0) {
     const unsigned bits = mpfr_bits(command, name.substr(5));
     return f(epsilon ? Mpfr_kernel(bits, Mpfr_number(*epsilon)) : Mpfr_kernel(bits));
