@@ -371,6 +371,26 @@ TEST_CASE("scenes that crashed or hung end with a message and status 2", "[cli][
   CHECK(run("build " + huge).status == 0);
 }
 
+TEST_CASE("a floating-point kernel that rounds valid triangles into crossing fails the run, not the scene", "[cli][trust]") {
+  // At 8 bits the first build of two generated boxes finds triangles
+  // crossing that the exact kernel keeps apart: reported as bad input (2).
+  const std::string boxes = std::string(KVD_BINARY_DIR) + "/rounded-boxes.json";
+  REQUIRE(run("generate boxes --boxes 2 --seed 1 -o " + boxes).status == 0);
+  for (const std::string command : {"simulate", "build", "diff"}) {
+    INFO(command);
+    const Run r = run(command + " " + boxes + " --kernel mpfr:8", "2>&1 >/dev/null");
+    CHECK(r.status == 1);
+    CHECK(r.out.find("failed by rounding") != std::string::npos);
+    CHECK(r.out.find(boxes) != std::string::npos);
+  }
+  CHECK(run("simulate " + boxes).status == 0);
+  // Triangles that do cross stay bad input in every kernel.
+  const std::string crossing = scene_file("crossing-rounded.json", R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
+      R"(, {"vertices": [["0","-1","0"],["0","1","0"],["0","0","2"]], "triangles": [[0,1,2]]}]})");
+  CHECK(run("build " + crossing + " --allow-intersecting --kernel double").status == 2);
+  CHECK(run("simulate " + crossing + " --allow-intersecting --kernel mpfr:8").status == 2);
+}
+
 TEST_CASE("times outside the scene's span are refused", "[cli][trust]") {
   const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";  // span [0, 10]
   CHECK(run("build " + scene + " --time 11").status == 2);

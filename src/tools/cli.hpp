@@ -33,6 +33,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// A floating-point kernel that fails on valid input (its rounding finds
+// triangles crossing that the exact kernel keeps apart): the message goes to
+// stderr and kvd exits with status 1, a failed run, not bad input.
+class Kernel_failure : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
 // The arguments after the command name, consumed in order.
 class Args {
 public:
@@ -94,18 +102,46 @@ auto with_disjoint_triangles(const std::string& command, const std::string& path
   }
 }
 
-// The KVD just after t.
-template <class K>
-tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
-                          const predicates::Classifier<K>& classifier, const typename K::Time& t) {
-  return with_disjoint_triangles(command, path, [&] { return tree::build(classifier, t); });
-}
-
 // The kernel as --kernel names it: "exact", "double", "mpfr:256".
 template <class K>
 std::string kernel_label(const K& k) {
   if constexpr (std::is_same_v<K, Mpfr_kernel>) return "mpfr:" + std::to_string(k.bits());
   else return K::name;
+}
+
+// What f returns, f building scene s's KVD at instant t in kernel k (at its
+// start, then running on). Triangles that intersect there are bad input, as
+// in with_disjoint_triangles, when the exact kernel finds them too; when
+// only a floating-point kernel does, by rounding, it is that kernel's
+// failure (Kernel_failure).
+template <class K, class F>
+auto with_disjoint_triangles_in(const std::string& command, const std::string& path, const K& k,
+                                const scene::Scene& s, const scene::Q& t, F&& f) {
+  try {
+    return f();
+  } catch (const tree::Build_error& e) {
+    if constexpr (!std::is_same_v<K, Exact_kernel>) {
+      const Exact_kernel exact;
+      bool apart = true;
+      try {
+        tree::build(predicates::Classifier<Exact_kernel>(exact, s), Exact_time(t));
+      } catch (const tree::Build_error&) {
+        apart = false;
+      }
+      if (apart)
+        throw Kernel_failure("kvd " + command + ": " + path + ": the " + kernel_label(k) + " kernel's build at t = " +
+                             t.get_str() + " failed by rounding (" + e.what() +
+                             "); the exact kernel keeps the triangles apart there");
+    }
+    throw Usage_error("kvd " + command + ": " + path + ": " + e.what());
+  }
+}
+
+// The KVD just after t.
+template <class K>
+tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
+                          const predicates::Classifier<K>& classifier, const typename K::Time& t) {
+  return with_disjoint_triangles(command, path, [&] { return tree::build(classifier, t); });
 }
 
 // Scene_error naming the first number of the scene that K's coefficient

@@ -65,14 +65,16 @@ const char* const build_help =
     "cut whose children are the side of the earlier segment's marked endpoint\n"
     "(endpoint 0) and the other; --bsp does not apply.\n"
     "\n"
-    "Exit status: 0 on success, 2 on a bad scene (including triangles that\n"
-    "intersect at T) or bad usage.\n";
+    "Exit status: 0 on success, 1 when a floating-point kernel's rounding makes\n"
+    "triangles cross that the exact kernel keeps apart at T, 2 on a bad scene\n"
+    "(including triangles that intersect at T) or bad usage.\n";
 
 template <class K>
 int run(const K& k, const std::string& path, const scene::Scene& s, const scene::Q& time, bool json, bool tree_only) {
   const auto start = std::chrono::steady_clock::now();
   const predicates::Classifier<K> classifier(k, s);
-  const tree::Kvd_tree t = build_tree("build", path, classifier, k.time(from_rational<typename K::FT>(time)));
+  const tree::Kvd_tree t = with_disjoint_triangles_in(
+      "build", path, k, s, time, [&] { return tree::build(classifier, k.time(from_rational<typename K::FT>(time))); });
   const std::string secs = seconds_since(start);
   const tree::Tree_statistics st = t.statistics();
   const double peak = peak_rss_mib();

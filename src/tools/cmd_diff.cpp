@@ -54,7 +54,9 @@ const char* const diff_help =
     "first_divergence_event is the first exact event (from 0) that is missed,\n"
     "out of order, followed by another tree, or preceded by a spurious event;\n"
     "events_compared when the runs differ only after the last exact event.\n"
-    "Divergence is a finding: exit status 0, or 2 on bad input.\n";
+    "Divergence is a finding: exit status 0; 1 when the floating-point run\n"
+    "cannot start (its rounding makes triangles cross that the exact kernel\n"
+    "keeps apart), 2 on bad input.\n";
 
 Diff_view<kinetic::Failure> view(const kinetic::Differential& d, const kinetic::Simulation<Exact_time>& exact) {
   return {d,
@@ -106,7 +108,8 @@ int diff(Args& args) {
       "diff", *kernel,
       [&](const auto& k) {
         const char* name = std::decay_t<decltype(k)>::name;
-        const auto d = kinetic::compare_with(exact, k, s, progress(name));
+        const auto d = with_disjoint_triangles_in("diff", *sa.path, k, s, s.start,
+                                                  [&] { return kinetic::compare_with(exact, k, s, progress(name)); });
         if (sa.json) print_diff_json(*sa.path, *kernel, view(d, exact.sim));
         else print_diff_text(*kernel, view(d, exact.sim));
         return 0;

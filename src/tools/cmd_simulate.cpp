@@ -136,7 +136,8 @@ const char* const simulate_help =
     "stopped: stuck when none succeeds).\n"
     "\n"
     "Exit status: 0 on success, 1 on a failed validation or a floating-point run\n"
-    "stuck at one instant, 2 on bad input.\n";
+    "stuck at one instant or unable to start (its rounding makes triangles\n"
+    "cross that the exact kernel keeps apart), 2 on bad input.\n";
 
 // The canonical isolating interval of an exact time; a floating-point time
 // is its own.
@@ -450,7 +451,8 @@ int simulate(Args& args) {
   return with_kernel(
       "simulate", kernel, [&](const auto& k) {
         require_representable(*sa.path, s, k);
-        return with_disjoint_triangles("simulate", *sa.path, [&] { return report(k, s, o, trace, list, sa.json); });
+        return with_disjoint_triangles_in("simulate", *sa.path, k, s, s.start,
+                                          [&] { return report(k, s, o, trace, list, sa.json); });
       }, epsilon, filter);
 }
 

@@ -70,6 +70,9 @@ int main(int argc, char** argv) {
   } catch (const kvd::cli::Usage_error& e) {
     std::cerr << e.what() << "\n";
     return 2;
+  } catch (const kvd::cli::Kernel_failure& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
   } catch (const kvd::scene::Scene_error& e) {
     std::cerr << "kvd " << command << ": " << e.what() << "\n";
     return 2;
