@@ -371,6 +371,34 @@ TEST_CASE("scenes that crashed or hung end with a message and status 2", "[cli][
   CHECK(run("build " + huge).status == 0);
 }
 
+TEST_CASE("kvd order and kvd render at an instant where cuts degenerate", "[cli][order][render][trust]") {
+  // The mover's vertex (0, 0, 1) is on the line x ∨ z at the start: its
+  // P-cut and the corners on it vanish there, and order and render divided
+  // by their W of zero (SIGFPE, exit 136). The tree at 0 holds just after 0;
+  // its corners at 0 are their limits from after 0.
+  const std::string objects = R"(, "objects": [
+      {"name": "floor", "vertices": [["-4","-4","0"], ["4","-4","0"], ["0","4","0"]], "triangles": [[0,1,2]]},
+      {"name": "mover", "vertices": [["0","0","1"], ["1","0","1"], ["0","1","2"]], "triangles": [[0,1,2]],
+       "motion": {"translation": [["0","1/2"], "0", "0"]}}]})";
+  const std::string head = R"({"format": "kvd-scene/1", "time": {"start": "0", "end": "10"}, "decomposition": )";
+  const std::string on_axis =
+      scene_file("on-axis.json", head + R"({"x": ["0", "0", "0", "1"], "z": ["0", "0", "1", "0"]})" + objects);
+  const Run order = run("order " + on_axis + " --view 10,10,10");
+  CHECK(order.status == 0);
+  CHECK(order.out.find("triangle 1: (1/2 1/2 3/2) (0 1 2) (0 0 1)\n") != std::string::npos);
+  CHECK(run("order " + on_axis + " --view 10,10,10 --cull").status == 0);
+  CHECK(run("render " + on_axis + " --view 10,10,10").out.find("<polygon") != std::string::npos);
+  // x meets z, or vanishes, at t = 1: every P-cut degenerates there.
+  for (const char* x : {R"([["1","-1"], "0", ["0","1"], "0"])", R"([["1","-1"], "0", "0", "0"])"}) {
+    INFO(x);
+    const std::string at_one = scene_file("x-degenerate.json", head + R"({"x": )" + x + "}" + objects);
+    for (const char* command : {"order --view 10,10,10 --time 1", "render --view 10,10,10 --time 1", "build --time 1"})
+      CHECK(run(std::string(command) + " " + at_one).status == 0);
+    CHECK(run("order " + at_one + " --view 10,10,10 --time 1").out.find("triangle 1: (1/2 0 1) (3/2 0 1)") !=
+          std::string::npos);
+  }
+}
+
 TEST_CASE("a floating-point kernel that rounds valid triangles into crossing fails the run, not the scene", "[cli][trust]") {
   // At 8 bits the first build of two generated boxes finds triangles
   // crossing that the exact kernel keeps apart: reported as bad input (2).

@@ -45,11 +45,8 @@ std::optional<mpq_class> hit(const V3& view, const V3& d, const std::vector<V3>&
 // The fragment of T-node i at t, as exact Euclidean points.
 std::vector<V3> polygon(const predicates::Classifier<Exact_kernel>& c, const tree::Kvd_tree& tr, int i, const mpq_class& t) {
   std::vector<V3> p;
-  for (const auto& v : std::get<tree::Triangle_fragment>(tr.nodes[static_cast<std::size_t>(i)].fragment).corners) {
-    const auto x = c.position(v);
-    const mpq_class w = x[3](t);
-    p.push_back({x[0](t) / w, x[1](t) / w, x[2](t) / w});
-  }
+  for (const auto& v : std::get<tree::Triangle_fragment>(tr.nodes[static_cast<std::size_t>(i)].fragment).corners)
+    p.push_back(query::corner_at(c, v, t));
   return p;
 }
 
@@ -170,6 +167,62 @@ TEST_CASE("back-to-front order agrees with an exact z-buffer", "[visibility]") {
     reversed_wrong += check_order(s, s.start + mpq_class(1, 2), cs.view, 16);
   }
   CHECK(reversed_wrong > 100);  // front-to-back painting is caught
+}
+
+TEST_CASE("back-to-front order at an instant where cuts degenerate, from the tree's limit after it",
+          "[visibility][degenerate]") {
+  // The floor's first vertex starts on the line x ∨ z (the z axis) and leaves
+  // it along x: its P-plane vanishes at t = 0 only, as do the corners built
+  // on it. The tree built at 0 holds just after 0, where that plane is
+  // y = 0, splitting the floor under the roof; the order and the corners at 0
+  // are the limits from after 0. (Evaluated at 0, the corners had a W of zero,
+  // and the plane gave every view the same order.)
+  const auto scene_with = [](const std::string& decomposition, const std::string& objects) {
+    return scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": "0", "end": "10"}, "decomposition": )" +
+                                 decomposition + ", " + objects + "}",
+                             "degenerate-at-an-instant");
+  };
+  // The floor first, so that the degenerate P-cut is the root.
+  const std::string moving_floor = R"("priority": {"order": [[0, 0], [1, 0]]}, "objects": [
+      {"name": "floor", "vertices": [["0","0","0"], ["5","-5","0"], ["5","5","0"]], "triangles": [[0,1,2]],
+       "motion": {"translation": [["0","1/2"], "0", "0"]}},
+      {"name": "roof", "vertices": [["1","-3","1"], ["3","3","1"], ["1","3","1"]], "triangles": [[0,1,2]]}])";
+  // A vertex of the upper triangle on the axis at 0, the floor under it.
+  const std::string moving_roof = R"("objects": [
+      {"name": "floor", "vertices": [["-4","-4","0"], ["4","-4","0"], ["0","4","0"]], "triangles": [[0,1,2]]},
+      {"name": "mover", "vertices": [["0","0","1"], ["1","0","1"], ["0","1","2"]], "triangles": [[0,1,2]],
+       "motion": {"translation": [["0","1/2"], "0", "0"]}}])";
+  const V3 views[] = {{2, 10, 10}, {2, -10, 10}, {2, 10, -10}, {2, -10, -10}, {-3, 9, 8}, {10, -1, 3}};
+  // And x meeting z, or x vanishing, at t = 1 only: every P-plane degenerates there.
+  const struct {
+    const char* decomposition;
+    int t;
+  } cases[] = {{R"({"x": ["0", "0", "0", "1"], "z": ["0", "0", "1", "0"]})", 0},
+               {R"({"x": ["0", "0", "5", "1"], "z": ["0", "0", "10", "1"]})", 0},
+               {R"({"x": [["1","-1"], "0", ["0","1"], "0"]})", 1},
+               {R"({"x": [["1","-1"], "0", "0", "0"]})", 1}};
+  long reversed_wrong = 0;
+  for (const std::string& objects : {moving_floor, moving_roof})
+    for (const auto& cs : cases) {
+      INFO(cs.decomposition << " at " << cs.t << ", " << objects);
+      const scene::Scene s = scene_with(cs.decomposition, objects);
+      for (const V3& view : views) {
+        INFO(view[0] << "," << view[1] << "," << view[2]);
+        reversed_wrong += check_order(s, cs.t, view, 24);
+      }
+    }
+  CHECK(reversed_wrong > 0);
+  // The corners at 0 are the limits of those just after: the floor's corner
+  // on the P-cut of its vertex (0, 0, 0) is that vertex, whatever the cut.
+  const scene::Scene s = scene_with(R"({"x": ["0", "0", "0", "1"], "z": ["0", "0", "1", "0"]})", moving_floor);
+  const Exact_kernel k;
+  const predicates::Classifier<Exact_kernel> c(k, s);
+  const tree::Kvd_tree tr = tree::build(c, Exact_time(0));
+  std::size_t corners = 0;
+  for (std::size_t i = 0; i < tr.nodes.size(); ++i)
+    if (tr.nodes[i].cut.kind == symbolic::Symbolic_plane::Kind::T)
+      for (const V3& p : polygon(c, tr, static_cast<int>(i), 0)) corners += p == V3{0, 0, 0};
+  CHECK(corners == 2);
 }
 
 TEST_CASE("occlusion culling with z at the viewpoint hides only what is hidden", "[visibility][culling]") {

@@ -1,5 +1,6 @@
 #include "kvd/predicates/classify.hpp"
 
+#include <array>
 #include <type_traits>
 
 #include "classify_filter.hpp"
@@ -9,6 +10,42 @@
 #include "kvd/symbolic/incidence.hpp"
 
 namespace kvd::predicates {
+
+namespace {
+
+// The coefficients of the lowest order of ε in which some coordinate of a
+// point or plane does not vanish identically (all zero if none does).
+template <class Coefficient, class Vanishes>
+std::array<Coefficient, 4> lowest_order(const std::array<Poly<Coefficient>, 4>& e, const Vanishes& vanishes) {
+  int order = -1;
+  for (const auto& x : e)
+    for (int j = 0; j <= x.degree(); ++j)
+      if (!vanishes(x[j]) && (order < 0 || j < order)) order = j;
+  std::array<Coefficient, 4> out;
+  for (std::size_t k = 0; k < 4; ++k) out[k] = order < 0 ? Coefficient() : e[k][order];
+  return out;
+}
+
+// The coordinates of a point or plane at t, or, where k takes all four for
+// zero there, their limit as t' -> t+: the lowest derivative at t that is not
+// zero in every coordinate, the lowest-order term of the expansion in t' - t
+// times a positive factor (so every side keeps its sign).
+template <class K>
+std::array<typename K::FT, 4> right_limit(const K& k, std::array<typename K::Poly, 4> c, const typename K::FT& t) {
+  for (;;) {
+    std::array<typename K::FT, 4> at;
+    bool zero = true, constant = true;
+    for (std::size_t i = 0; i < 4; ++i) {
+      at[i] = c[i](t);
+      zero = zero && k.sign(at[i]) == 0;
+      constant = constant && c[i].degree() <= 0;
+    }
+    if (!zero || constant) return at;
+    for (auto& x : c) x = x.derivative();
+  }
+}
+
+}  // namespace
 
 template <class K>
 Classifier<K>::Classifier(const K& k, const scene::Scene& s)
@@ -84,13 +121,24 @@ Point4<typename K::Poly> Classifier<K>::position_of(const symbolic::Symbolic_ver
   const symbolic::Symbolic_vertex v = symbolic::canonical(motion_.scene(), given);
   Point4<typename K::Poly> x = point_poly(v);
   if (!(vanishes(x[0]) && vanishes(x[1]) && vanishes(x[2]) && vanishes(x[3]))) return x;
-  const auto xe = perturbed().point(v);
-  int order = -1;  // the lowest order of ε with a non-zero coordinate
-  for (int k = 0; k < 4; ++k)
-    for (int j = 0; j <= xe[k].degree(); ++j)
-      if (!vanishes(xe[k][j]) && (order < 0 || j < order)) order = j;
-  for (int k = 0; k < 4; ++k) x[k] = order < 0 ? typename K::Poly() : xe[k][order];
-  return x;
+  return {lowest_order(perturbed().point(v).c, [this](const typename K::Poly& f) { return vanishes(f); })};
+}
+
+template <class K>
+Point4<typename K::FT> Classifier<K>::position_after(const symbolic::Symbolic_vertex& v, const typename K::FT& t) const {
+  return {right_limit(*k_, position(v).c, t)};
+}
+
+template <class K>
+Plane4<typename K::FT> Classifier<K>::plane_after(const symbolic::Symbolic_plane& p, const typename K::FT& t) const {
+  auto it = site_planes_.find(p);
+  if (it == site_planes_.end()) {
+    Plane4<typename K::Poly> m = plane_poly(p);
+    if (vanishes(m[0]) && vanishes(m[1]) && vanishes(m[2]) && vanishes(m[3]))
+      m = {lowest_order(perturbed().plane(p).c, [this](const typename K::Poly& f) { return vanishes(f); })};
+    it = site_planes_.emplace(p, std::move(m)).first;
+  }
+  return {right_limit(*k_, it->second.c, t)};
 }
 
 template <class K>

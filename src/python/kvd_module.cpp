@@ -76,9 +76,8 @@ py::list fragments(const kvd::predicates::Classifier<kvd::Exact_kernel>& c, cons
     const auto& n = t.nodes[static_cast<std::size_t>(i)];
     py::list corners;
     for (const auto& v : std::get<kvd::tree::Triangle_fragment>(n.fragment).corners) {
-      const auto p = c.position(v);
-      const mpq_class w = p[3](at);
-      corners.append(py::make_tuple(to_fraction(p[0](at) / w), to_fraction(p[1](at) / w), to_fraction(p[2](at) / w)));
+      const auto p = kvd::query::corner_at(c, v, at);
+      corners.append(py::make_tuple(to_fraction(p[0]), to_fraction(p[1]), to_fraction(p[2])));
     }
     py::dict f;
     f["triangle"] = n.cut.id;

@@ -73,10 +73,8 @@ std::vector<Painted_polygon> paint(const predicates::Classifier<Exact_kernel>& c
     Painted_polygon poly{{}, {}, palette[s.triangle_object[n.cut.id] % (sizeof palette / sizeof *palette)]};
     bool visible = true;
     for (std::size_t k = 0; k < f.corners.size(); ++k) {
-      const auto p = c.position(f.corners[k]);
-      const mpq_class w = p[3](t);
-      const auto q = camera.project(
-          {mpq_class(p[0](t) / w).get_d(), mpq_class(p[1](t) / w).get_d(), mpq_class(p[2](t) / w).get_d()});
+      const auto p = corner_at(c, f.corners[k], t);
+      const auto q = camera.project({p[0].get_d(), p[1].get_d(), p[2].get_d()});
       if (!q) visible = false;  // behind the eye: left out
       else poly.points.push_back(*q);
       poly.sides.push_back(side_colour(f.sides[k]));

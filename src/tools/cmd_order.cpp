@@ -60,10 +60,8 @@ int order(Args& args) {
     const tree::Node& n = t.nodes[static_cast<std::size_t>(i)];
     Json vertices = Json::array();
     for (const auto& v : std::get<tree::Triangle_fragment>(n.fragment).corners) {
-      const auto p = c.position(v);
-      const mpq_class w = p[3](time);
       Json xyz = Json::array();
-      for (int j = 0; j < 3; ++j) xyz.push_back(mpq_class(p[j](time) / w).get_str());
+      for (const mpq_class& x : query::corner_at(c, v, time)) xyz.push_back(x.get_str());
       vertices.push_back(xyz);
     }
     fragments.push_back({{"triangle", n.cut.id}, {"vertices", vertices}});

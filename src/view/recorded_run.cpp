@@ -47,10 +47,9 @@ Instant::Instant(const Recorded_run& run, const mpq_class& t)
       tree_(tree::build(*classifier_, Exact_time(t))) {}
 
 std::array<double, 3> Instant::position(const symbolic::Symbolic_vertex& v) const {
-  const auto p = classifier_->position(v);
-  const mpq_class w = p[3](t_);
-  if (w == 0) return {0, 0, 0};  // a direction: no place to draw
-  return {mpq_class(p[0](t_) / w).get_d(), mpq_class(p[1](t_) / w).get_d(), mpq_class(p[2](t_) / w).get_d()};
+  const auto p = classifier_->position_after(v, t_);  // the tree's: defined where its cuts degenerate at t
+  if (p[3] == 0) return {0, 0, 0};  // a direction: no place to draw
+  return {mpq_class(p[0] / p[3]).get_d(), mpq_class(p[1] / p[3]).get_d(), mpq_class(p[2] / p[3]).get_d()};
 }
 
 Feature_shapes feature_shapes(const Failing_certificate& f, const Instant& in) {

@@ -45,6 +45,25 @@ def test_back_to_front_order_is_kvd_orders_in_fractions():
         assert [tuple(v) for v in a["vertices"]] == [tuple(Fraction(x) for x in v) for v in b["vertices"]]
 
 
+def test_the_order_at_an_instant_where_a_cut_degenerates_is_kvd_orders(tmp_path):
+    # The mover's vertex (0, 0, 1) is on the line x ∨ z at 0: its P-cut and
+    # the corners on it vanish there, and the corners were divided by a W of
+    # zero (the interpreter died of SIGFPE). Both give their limits from after 0.
+    name = tmp_path / "on-axis.json"
+    name.write_text(json.dumps({
+        "format": "kvd-scene/1", "time": {"start": "0", "end": "10"},
+        "decomposition": {"x": ["0", "0", "0", "1"], "z": ["0", "0", "1", "0"]},
+        "objects": [
+            {"vertices": [["-4", "-4", "0"], ["4", "-4", "0"], ["0", "4", "0"]], "triangles": [[0, 1, 2]]},
+            {"vertices": [["0", "0", "1"], ["1", "0", "1"], ["0", "1", "2"]], "triangles": [[0, 1, 2]],
+             "motion": {"translation": [["0", "1/2"], "0", "0"]}}]}))
+    ours = kvd.build(kvd.load_scene(name), 0, view=(10, 10, 10))["order"]
+    theirs = json.loads(cli("order", str(name), "--view", "10,10,10", "--json"))["fragments"]
+    assert [[tuple(v) for v in f["vertices"]] for f in ours] == \
+        [[tuple(Fraction(x) for x in v) for v in f["vertices"]] for f in theirs]
+    assert (0, 0, 1) in [tuple(v) for f in ours for v in f["vertices"]]
+
+
 def test_a_scene_from_lists_is_the_scene_from_its_file():
     # data/two-triangles.json written as Python lists with exact numbers.
     text = json.load(open(scene_file("two-triangles.json")))

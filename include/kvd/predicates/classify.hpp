@@ -85,6 +85,20 @@ public:
   // x), the first non-zero order of its ε-expansion.
   // Computed once per vertex, like the motion polynomials.
   const Point4<typename K::Poly>& position(const symbolic::Symbolic_vertex& v) const;
+  // Where v is at the instant t for the tree built at t, which holds on
+  // (t, t + δ): position(v) at t, or, where all four coordinates vanish at t
+  // (v made by planes that coincide at t only: the P-plane of a vertex
+  // crossing the line x ∨ z, or every P-plane when x meets z or x vanishes
+  // at t), its limit as t' -> t+, the lowest order of its expansion around t
+  // that is not zero. A corner of a triangle fragment is then a Euclidean
+  // point (W != 0) while the scene is valid.
+  Point4<typename K::FT> position_after(const symbolic::Symbolic_vertex& v, const typename K::FT& t) const;
+  // The plane of site p the same way: its motion plane, or, where that
+  // vanishes identically (the E-plane of an edge parallel to z), the first
+  // order of its ε-expansion that does not, at t or, where it vanishes at t,
+  // as t' -> t+. The fragments on each side of p's node lie on that side of
+  // this plane, so a point's side of it is the side it sees them from.
+  Plane4<typename K::FT> plane_after(const symbolic::Symbolic_plane& p, const typename K::FT& t) const;
   // The P-plane of the pencil through v, x ∨ z ∨ position(v): the implicit
   // P-cut through an intersection point (thesis 6.4.2). Computed once per vertex.
   const Plane4<typename K::Poly>& p_plane_through(const symbolic::Symbolic_vertex& v) const;
@@ -128,6 +142,7 @@ private:
   mutable std::unordered_map<std::pair<std::size_t, std::size_t>, typename K::Poly, symbolic::Symbolic_hash> edge_lines_;
   mutable std::unordered_map<symbolic::Symbolic_vertex, Point4<typename K::Poly>, symbolic::Symbolic_hash> positions_;
   mutable std::unordered_map<symbolic::Symbolic_vertex, Plane4<typename K::Poly>, symbolic::Symbolic_hash> p_planes_;
+  mutable std::unordered_map<symbolic::Symbolic_plane, Plane4<typename K::Poly>, symbolic::Symbolic_hash> site_planes_;
   mutable std::optional<symbolic::Scene_geometry<Poly<typename K::Poly>>> perturbed_;
   bool z_euclidean_;
   // Rule 2 on intervals first: the exact kernel with its filter on only.

@@ -3,8 +3,12 @@
 // of its plane, then the node's own triangle fragment (T-nodes), then the
 // near side. A viewpoint on a node's plane sees that node's fragments edge-on,
 // and either order of the two sides is correct; the negative side goes first.
+// The tree built at t holds on (t, t + δ): its planes and fragment corners at
+// t are their limits from after t (Classifier::plane_after, position_after),
+// which stay defined where the cuts degenerate at t itself.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "kvd/predicates/classify.hpp"
@@ -17,6 +21,14 @@ namespace kvd::query {
 template <class K>
 std::vector<int> back_to_front(const predicates::Classifier<K>& classifier, const tree::Kvd_tree& tree,
                                const Point4<typename K::FT>& view, const typename K::FT& t);
+
+// The Euclidean place at t of a corner of one of the tree's triangle
+// fragments, exactly: Classifier::position_after divided by its W. Throws
+// std::logic_error if that W is zero (no corner of a fragment is at infinity
+// while the scene's triangles are proper).
+template <class K>
+std::array<typename K::FT, 3> corner_at(const predicates::Classifier<K>& classifier, const symbolic::Symbolic_vertex& v,
+                                        const typename K::FT& t);
 
 // Occlusion culling (thesis 8.2.4) when the decomposition point z is the
 // viewpoint: every P- and E-plane then passes through the viewer, so the
