@@ -8,6 +8,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -616,6 +617,68 @@ TEST_CASE("kvd view and kvd animate refuse bad input with status 2 and write not
   CHECK(run("animate " + data + "boxes.json --view 1,2,3 --out " + dir + "x.avi").status == 2);
   CHECK(run("animate " + data + "boxes.json --view 1,2,3 --fps 0 --out " + film).status == 2);
   CHECK(!std::ifstream(film).good());
+}
+
+TEST_CASE("kvd view refuses a trace or report with a field of the wrong type and names the file and the field",
+          "[cli][view]") {
+  // A null or a number where kvd view reads a string (or an object) ended in
+  // "internal error" (a JSON type_error) and status 1.
+  const std::string data = std::string(KVD_SOURCE_DIR) + "/data/";
+  const std::string dir = std::string(KVD_BINARY_DIR) + "/";
+  const std::string scene = data + "two-triangles.json", page = dir + "wrong-type.html";
+  const std::string trace = dir + "wrong-type.trace", report = dir + "wrong-type-diff.json";
+  std::remove(page.c_str());
+  REQUIRE(run("simulate " + scene + " --trace " + trace).status == 0);
+  std::ifstream in(trace);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const struct {
+    const char *from, *to, *message;
+  } lines[] = {{"\"time\": \"2\"", "\"time\": null", ": line 1: a trace line with a field of the wrong type: \"time\" is null"},
+               {"\"certificate\": \"VE\"", "\"certificate\": 7", ": line 1: a trace line with a field of the wrong type: \"certificate\" is a number"},
+               {"\"nodes\": \"SV(v4) E(1)\"", "\"nodes\": null", ": line 1: a trace line with a field of the wrong type: \"nodes\" is null"}};
+  for (const auto& l : lines) {
+    INFO(l.to);
+    std::string altered = text;
+    const auto at = altered.find(l.from);
+    REQUIRE(at != std::string::npos);
+    altered.replace(at, std::strlen(l.from), l.to);
+    const std::string file = scene_file("wrong-type-altered.trace", altered);
+    const Run r = run("view " + file + " --scene " + scene + " --out " + page, "2>&1 >/dev/null");
+    CHECK(r.status == 2);
+    CHECK(r.out.find("kvd view: " + file + l.message) != std::string::npos);
+  }
+  REQUIRE(run("diff " + scene + " --kernel double --json > " + report).status == 0);
+  std::ifstream report_in(report);
+  const nlohmann::json diff = nlohmann::json::parse(report_in);
+  REQUIRE(diff["events"].size() > 2);
+  const struct {
+    const char* pointer;
+    nlohmann::json value;
+    const char* message;
+  } fields[] = {{"/events/0/exact_time", nullptr, "/events/0/exact_time is null, not a string"},
+                {"/events/1/certificate", 3, "/events/1/certificate is a number, not a string"},
+                {"/events/2/nodes", nullptr, "/events/2/nodes is null, not a string"},
+                {"/events/2/exact_time", 2.5, "/events/2/exact_time is a number, not a string"},
+                {"/events/1", 5, "/events/1 is a number, not an object"},
+                {"/kernel", nullptr, "/kernel is null, not a string"},
+                {"/scene", 1, "/scene is a number, not a string"},
+                {"/events", nlohmann::json::object(), "/events is an object, not an array"}};
+  for (const auto& f : fields) {
+    INFO(f.pointer);
+    nlohmann::json altered = diff;
+    altered[nlohmann::json::json_pointer(f.pointer)] = f.value;
+    const std::string file = scene_file("wrong-type-diff-altered.json", altered.dump());
+    const Run r = run("view " + file + " --out " + page, "2>&1 >/dev/null");
+    CHECK(r.status == 2);
+    CHECK(r.out.find("kvd view: " + file + ": a kvd diff report with a field of the wrong type: " + f.message) !=
+          std::string::npos);
+  }
+  CHECK(!std::ifstream(page).good());
+  // Unaltered, both are read (a build without the viewer page stops after).
+  for (const std::string& args : {trace + " --scene " + scene, report}) {
+    const Run r = run("view " + args + " --out " + page, "2>&1");
+    CHECK((r.status == 0 || r.out.find("has no viewer page") != std::string::npos));
+  }
 }
 
 TEST_CASE("kvd info tells segment scenes by their format and counts them exactly", "[cli][info][segments]") {

@@ -1,6 +1,8 @@
 // kvd view SCENE|REPORT --out FILE.html: an interactive page of a run.
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -65,23 +67,71 @@ struct Listed_event {
   std::string place, time, certificate, nodes;
 };
 
+// The fields kvd view reads from a report or a trace, each checked for its
+// type: a field of another type is a Usage_error naming the file, the place
+// (a line of a trace) and the field, never a JSON exception.
+class Checked_fields {
+public:
+  // `prefix` starts every message: "kvd view: FILE: a kvd diff report".
+  explicit Checked_fields(std::string prefix) : prefix_(std::move(prefix)) {}
+
+  // Usage_error unless `ok`: `field` (a JSON pointer, or a key in quotes)
+  // holds `value`, which is not `expected`.
+  void require(bool ok, const std::string& field, const nlohmann::json& value, const char* expected) const {
+    if (!ok)
+      throw Usage_error(prefix_ + " with a field of the wrong type: " + field + " is " + a(value) + ", not " + expected);
+  }
+  // The string at `key` of the object j ("" when it is missing: the event
+  // then is not the run's, which the comparison names).
+  std::string string(const nlohmann::json& j, const std::string& field, const char* key) const {
+    const auto it = j.find(key);
+    if (it == j.end()) return "";
+    require(it->is_string(), field, *it, "a string");
+    return it->get<std::string>();
+  }
+
+private:
+  static std::string a(const nlohmann::json& value) {
+    switch (value.type()) {
+      case nlohmann::json::value_t::null: return "null";
+      case nlohmann::json::value_t::boolean: return "a boolean";
+      case nlohmann::json::value_t::string: return "a string";
+      case nlohmann::json::value_t::array: return "an array";
+      case nlohmann::json::value_t::object: return "an object";
+      default: return "a number";
+    }
+  }
+  std::string prefix_;
+};
+
 // A kvd diff --json report, or nothing when `text` holds something else.
 std::optional<nlohmann::json> diff_report(const std::string& path, const std::string& text) {
   const auto j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("first_divergence_event")) return std::nullopt;
   for (const char* key : {"scene", "kernel", "events", "spurious", "events_compared"})
     if (!j.contains(key)) throw Usage_error("kvd view: " + path + ": a kvd diff report without \"" + key + "\"");
-  if (!j["scene"].is_string() || !j["events"].is_array() || !j["spurious"].is_array() ||
-      !j["events_compared"].is_number_unsigned())
-    throw Usage_error("kvd view: " + path + ": a kvd diff report with a field of the wrong type");
+  const Checked_fields report("kvd view: " + path + ": a kvd diff report");
+  report.require(j["scene"].is_string(), "/scene", j["scene"], "a string");
+  report.require(j["kernel"].is_string(), "/kernel", j["kernel"], "a string");
+  report.require(j["events"].is_array(), "/events", j["events"], "an array");
+  report.require(j["spurious"].is_array(), "/spurious", j["spurious"], "an array");
+  report.require(j["events_compared"].is_number_unsigned(), "/events_compared", j["events_compared"],
+                 "a count");
+  const auto& first = j["first_divergence_event"];
+  report.require(first.is_null() || first.is_number_unsigned(), "/first_divergence_event", first, "an event or null");
   return j;
 }
 
-std::vector<Listed_event> report_events(const nlohmann::json& j) {
+// The events of a report from diff_report.
+std::vector<Listed_event> report_events(const std::string& path, const nlohmann::json& j) {
+  const Checked_fields report("kvd view: " + path + ": a kvd diff report");
   std::vector<Listed_event> out;
   for (std::size_t i = 0; i < j["events"].size(); ++i) {
+    const std::string place = "/events/" + std::to_string(i);
     const auto& e = j["events"][i];
-    out.push_back({"/events/" + std::to_string(i), e.value("exact_time", ""), e.value("certificate", ""), e.value("nodes", "")});
+    report.require(e.is_object(), place, e, "an object");
+    out.push_back({place, report.string(e, place + "/exact_time", "exact_time"),
+                   report.string(e, place + "/certificate", "certificate"), report.string(e, place + "/nodes", "nodes")});
   }
   return out;
 }
@@ -99,13 +149,16 @@ std::optional<std::vector<Listed_event>> trace_events(const std::string& path, c
     if (line.empty()) continue;
     const auto j = nlohmann::json::parse(line, nullptr, false);
     const bool traced = j.is_object() && (j.contains("batch") || j.contains("motion_change"));
+    const std::string place = "line " + std::to_string(line_number);
     if (!traced) {
       if (line_number == 1) return std::nullopt;
-      throw Usage_error("kvd view: " + path + ": line " + std::to_string(line_number) + " is not a trace line");
+      throw Usage_error("kvd view: " + path + ": " + place + " is not a trace line");
     }
-    if (j.contains("batch"))
-      out.push_back({"line " + std::to_string(line_number), j.value("time", ""), j.value("certificate", ""),
-                     j.value("nodes", "")});
+    if (j.contains("batch")) {
+      const Checked_fields fields("kvd view: " + path + ": " + place + ": a trace line");
+      out.push_back({place, fields.string(j, "\"time\"", "time"), fields.string(j, "\"certificate\"", "certificate"),
+                     fields.string(j, "\"nodes\"", "nodes")});
+    }
   }
   return out;
 }
@@ -193,7 +246,7 @@ int view(Args& args) {
   std::optional<std::vector<Listed_event>> listed;
   if (report) {
     sa.path = report_scene(input, *report);
-    listed = report_events(*report);
+    listed = report_events(input, *report);
   } else if (trace) {
     if (!scene_of_trace) throw Usage_error("kvd view: " + input + " is a trace: give its scene with --scene SCENE");
     sa.path = *scene_of_trace;
