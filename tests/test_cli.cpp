@@ -41,6 +41,31 @@ Run run(const std::string& args, const std::string& redirect = "2>/dev/null") {
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
 }
 
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// An empty folder `name` under the build folder.
+std::filesystem::path fresh_folder(const std::string& name) {
+  const std::filesystem::path folder = std::filesystem::path(KVD_BINARY_DIR) / name;
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+// How many entries the folder holds, checking that none is a temporary file
+// an output left behind.
+std::size_t entries_without_temporary(const std::filesystem::path& folder) {
+  std::size_t entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) {
+    INFO(e.path().string());
+    CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
+    ++entries;
+  }
+  return entries;
+}
+
 }  // namespace
 
 TEST_CASE("kvd --help prints usage and succeeds", "[cli]") {
@@ -461,36 +486,23 @@ TEST_CASE("vertices of no triangle cost nothing and change no tree", "[cli][trus
 }
 
 TEST_CASE("outputs are written whole or not at all, and leave no temporary file", "[cli][trust]") {
-  namespace fs = std::filesystem;
-  const fs::path folder = fs::path(KVD_BINARY_DIR) / "atomic-out";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const std::filesystem::path folder = fresh_folder("atomic-out");
   const std::string scene = std::string(KVD_SOURCE_DIR) + "/data/two-triangles.json";
-  const fs::path trace = folder / "run.jsonl";
+  const std::filesystem::path trace = folder / "run.jsonl";
   std::ofstream(trace) << "old contents\n";
   CHECK(run("simulate " + scene + " --events 5 --trace " + trace.string()).status == 0);
-  std::ifstream in(trace);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  CHECK(text.rfind("{\"batch\": 0", 0) == 0);
+  CHECK(file_text(trace).rfind("{\"batch\": 0", 0) == 0);
   // A folder that does not exist: status 2, the old file untouched elsewhere, nothing left behind.
   CHECK(run("generate boxes -o " + (folder / "missing" / "x.json").string()).status == 2);
   CHECK(run("simulate " + scene + " --events 5 --trace " + (folder / "missing" / "t.jsonl").string()).status == 2);
-  std::size_t entries = 0;
-  for (const auto& e : fs::directory_iterator(folder)) {
-    INFO(e.path().string());
-    CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
-    ++entries;
-  }
-  CHECK(entries == 1);
+  CHECK(entries_without_temporary(folder) == 1);
 }
 
 TEST_CASE("an output that is a device, a FIFO or a link is written through, not replaced", "[cli][trust]") {
   // The temporary file was renamed over the target: over /dev/null, as root,
   // it replaced the device node by a regular file.
   namespace fs = std::filesystem;
-  const fs::path folder = fs::path(KVD_BINARY_DIR) / "through-out";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = fresh_folder("through-out");
   const fs::path fifo = folder / "pipe";
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
   // Held open for reading first, without blocking, so that the tool's open
@@ -509,18 +521,10 @@ TEST_CASE("an output that is a device, a FIFO or a link is written through, not 
   fs::create_symlink(file.filename(), link);
   CHECK(run("generate segments-random --n 5 -o " + link.string()).status == 0);
   CHECK(fs::is_symlink(link));
-  std::ifstream in(file);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  CHECK(text.find("\"kvd-segments/1\"") != std::string::npos);
+  CHECK(file_text(file).find("\"kvd-segments/1\"") != std::string::npos);
   // A folder is no file: status 2.
   CHECK(run("generate segments-random --n 5 -o " + folder.string()).status == 2);
-  std::size_t entries = 0;
-  for (const auto& e : fs::directory_iterator(folder)) {
-    INFO(e.path().string());
-    CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
-    ++entries;
-  }
-  CHECK(entries == 3);
+  CHECK(entries_without_temporary(folder) == 3);
 }
 
 TEST_CASE("output lost on standard output is status 2", "[cli][trust]") {
@@ -929,11 +933,6 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
 }
 
 namespace {
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 std::size_t occurrences(const std::string& text, const std::string& what) {
   std::size_t n = 0;

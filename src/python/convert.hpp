@@ -229,10 +229,15 @@ inline nlohmann::ordered_json motion_json(const py::handle& x, int depth = 0) {
 // leaves the run where it was. ValueError when `at` is before now or past
 // the span's end (where the run would stop, and take the change, at the
 // end) or the motion does not keep the segment where it is then, SceneError
-// naming the place of a bad motion.
+// naming the place of a bad motion. The motion, and `at` as the kernel's time.
 template <class K>
-segments::Segment_motion motion_change(const K& k, const typename K::Time& now, const segments::Segment_scene& scene,
-                                       std::size_t segment, const py::handle& motion, const py::handle& at) {
+struct Motion_change {
+  segments::Segment_motion motion;
+  typename K::Time at;
+};
+template <class K>
+Motion_change<K> motion_change(const K& k, const typename K::Time& now, const segments::Segment_scene& scene,
+                               std::size_t segment, const py::handle& motion, const py::handle& at) {
   const mpq_class q = to_mpq(at);
   const auto t = not_before_now(k, now, from_rational<typename K::FT>(q), "set_motion: at");
   check_in_span(q, "set_motion: at", scene.start, scene.end);
@@ -240,7 +245,7 @@ segments::Segment_motion motion_change(const K& k, const typename K::Time& now, 
   std::optional<typename K::Time> end;
   if (scene.end) end = k.time(from_rational<typename K::FT>(*scene.end));
   segments::check_motion_change(k, scene, segment, m, t, end);
-  return m;
+  return {std::move(m), t};
 }
 
 }  // namespace kvd::python

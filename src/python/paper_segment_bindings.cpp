@@ -40,9 +40,9 @@ public:
   // A flight-plan change at `at`, after the batches up to it: the batch of
   // the certificates it fails at once (failing empty when none).
   py::dict set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) {
-    const auto m = motion_change(k_, run_.now(), run_.scene(), segment, motion, at);
-    steps_.advance_for_change(k_, run_, Exact_time(to_mpq(at)), take());
-    const auto b = run_.set_motion(segment, m);
+    const auto change = motion_change(k_, run_.now(), run_.scene(), segment, motion, at);
+    steps_.advance_for_change(k_, run_, change.at, take());
+    const auto b = run_.set_motion(segment, change.motion);
     ++motion_changes_;
     return batch(b, false);
   }

@@ -95,9 +95,9 @@ public:
   // A flight-plan change at `at` (after the batches up to it): the motion
   // in the file format's forms, its numbers as text, int or Fraction.
   bool set_motion(std::size_t segment, const py::handle& motion, const py::handle& at) override {
-    const auto m = motion_change(k_, kin_.now(), kin_.scene(), segment, motion, at);
-    steps_.advance_for_change(k_, kin_, k_.time(from_rational<typename K::FT>(to_mpq(at))), take());
-    const bool changed = kin_.set_motion(segment, m);
+    const auto change = motion_change(k_, kin_.now(), kin_.scene(), segment, motion, at);
+    steps_.advance_for_change(k_, kin_, change.at, take());
+    const bool changed = kin_.set_motion(segment, change.motion);
     ++motion_changes_;
     return changed;
   }

@@ -117,24 +117,26 @@ std::string kernel_label(const K& k) {
 template <class K, class F>
 auto with_disjoint_triangles_in(const std::string& command, const std::string& path, const K& k,
                                 const scene::Scene& s, const scene::Q& t, F&& f) {
-  try {
-    return f();
-  } catch (const tree::Build_error& e) {
-    if constexpr (!std::is_same_v<K, Exact_kernel>) {
-      const Exact_kernel exact;
-      bool apart = true;
-      try {
-        tree::build(predicates::Classifier<Exact_kernel>(exact, s), Exact_time(t));
-      } catch (const tree::Build_error&) {
-        apart = false;
+  return with_disjoint_triangles(command, path, [&] {
+    try {
+      return f();
+    } catch (const tree::Build_error& e) {
+      if constexpr (!std::is_same_v<K, Exact_kernel>) {
+        const Exact_kernel exact;  // held by reference in the classifier
+        bool apart = true;
+        try {
+          tree::build(predicates::Classifier<Exact_kernel>(exact, s), Exact_time(t));
+        } catch (const tree::Build_error&) {
+          apart = false;
+        }
+        if (apart)
+          throw Kernel_failure("kvd " + command + ": " + path + ": the " + kernel_label(k) + " kernel's build at t = " +
+                               t.get_str() + " failed by rounding (" + e.what() +
+                               "); the exact kernel keeps the triangles apart there");
       }
-      if (apart)
-        throw Kernel_failure("kvd " + command + ": " + path + ": the " + kernel_label(k) + " kernel's build at t = " +
-                             t.get_str() + " failed by rounding (" + e.what() +
-                             "); the exact kernel keeps the triangles apart there");
+      throw;
     }
-    throw Usage_error("kvd " + command + ": " + path + ": " + e.what());
-  }
+  });
 }
 
 // The KVD just after t.
