@@ -1,18 +1,24 @@
 // kvd bench accuracy: error against run time. For every scene of a fixed set,
 // one exact run, then the differential harness (kvd diff) for double, MPFR at
-// 24, 53, 113, 256 and 1024 bits, and a second exact run. Writes
-// accuracy.csv (one row per scene and kernel), accuracy.md (a table per
-// kernel and one per scene) and, when gnuplot is installed, accuracy.svg.
+// 24, 53, 113, 256 and 1024 bits, and a second exact run; then the same
+// harness on two segment scenes (kvd diff SCENE --kernel K on a
+// kvd-segments/1 scene). Writes accuracy.csv (one row per scene and kernel),
+// accuracy-segments.csv (the same for the segment scenes), accuracy.md (a
+// table per kernel, one per scene, and the segment scenes' table that
+// README.md shows) and, when gnuplot is installed, accuracy.svg.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include "bench.hpp"
 #include "cli.hpp"
 #include "gnuplot.hpp"
 #include "kvd/kinetic/differential.hpp"
+#include "kvd/segments/segment_differential.hpp"
+#include "kvd/segments/segment_io.hpp"
 #include "report.hpp"
 #include "sweep.hpp"
 
@@ -32,6 +38,11 @@ const char* const accuracy_help =
     "of exact events not reproduced (missed, out of order, or another tree after\n"
     "them) against seconds per event, one point per kernel and scene.\n"
     "\n"
+    "Then the same on two segment scenes of --data, whatever --scenes, --kernels\n"
+    "and --events say: segments/rotating-10 (every event) in double, mpfr:24,\n"
+    "mpfr:53 and mpfr:113, and segments/random-100 (300 events) in double and\n"
+    "mpfr:24, into DIR/accuracy-segments.csv and accuracy.md's Segment scenes.\n"
+    "\n"
     "  --scenes   names under --data (default: random-20, uniform-scale-50,\n"
     "             uniform-density-100, boxes, rotor, viewpoint and the nine\n"
     "             scenes of stiff/)\n"
@@ -48,9 +59,24 @@ const std::vector<std::string> default_scenes{
 const std::vector<std::string> default_kernels{"double",   "mpfr:24",   "mpfr:53", "mpfr:113",
                                                "mpfr:256", "mpfr:1024", "exact"};
 
-struct Row {
+// The segment scenes: the exact run of `events` failures (kvd diff's
+// --events; rotating-10 ends before 100) against each kernel.
+struct Segment_case {
+  std::string scene;
+  std::size_t events;
+  std::vector<std::string> kernels;
+};
+const std::vector<Segment_case> segment_cases{
+    {"segments/rotating-10", 100, {"double", "mpfr:24", "mpfr:53", "mpfr:113"}},
+    {"segments/random-100", 300, {"double", "mpfr:24"}}};
+
+template <class D>
+struct Row_of {
   std::string scene, kernel;
-  kinetic::Differential d;
+  D d;
+  // The event count at which the exact run stopped, when it stopped before
+  // the scene's end.
+  std::optional<std::size_t> cut_at;
   std::size_t events() const { return d.events.size(); }
   double seconds() const { return d.seconds_inexact; }
   // Exact events missed, out of order or followed by another tree.
@@ -62,13 +88,16 @@ struct Row {
   double seconds_per_event() const { return events() ? seconds() / static_cast<double>(events()) : 0; }
   double share() const { return events() ? static_cast<double>(not_reproduced()) / static_cast<double>(events()) : 0; }
 };
+using Row = Row_of<kinetic::Differential>;
+using Segment_row = Row_of<segments::Segment_differential>;
 
-std::string csv(const std::vector<Row>& rows) {
+template <class R>
+std::string csv(const std::vector<R>& rows) {
   std::string out =
       "scene,kernel,events,seconds,seconds_per_event,max_time_error,max_relative_time_error,"
       "log10_max_relative_time_error,order_mismatches,missed_events,spurious_events,structure_mismatches,"
       "first_divergence_event,not_reproduced_share,failed_builds,refires,rebuilds\n";
-  for (const Row& r : rows) {
+  for (const R& r : rows) {
     const auto& d = r.d;
     const std::string log10 = d.max_relative_time_error > 0 ? cli::fixed(cli::log10_of(d.max_relative_time_error), 3) : "NaN";
     out += r.scene + "," + r.kernel + "," + std::to_string(r.events()) + "," + cli::fixed(r.seconds(), 6) + "," +
@@ -168,6 +197,28 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<std::string
   return out;
 }
 
+// The segment scenes, one row per kernel, as README.md shows them: the
+// relative error to two significant digits; builds repaired are the failed
+// builds the run made again at a later instant (Recovery::failed_builds).
+std::string segment_table(const std::vector<Segment_row>& rows) {
+  std::string out =
+      "\n## Segment scenes\n\n"
+      "| scene | kernel | events | first divergence | missed | another tree after | max relative time error | "
+      "builds repaired |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
+  std::string previous;
+  for (const Segment_row& r : rows) {
+    const std::string scene =
+        r.scene == previous ? "" : r.scene + (r.cut_at ? ", " + std::to_string(*r.cut_at) + " events" : "");
+    previous = r.scene;
+    out += "| " + scene + " | " + r.kernel + " | " + std::to_string(r.events()) + " | " +
+           (r.d.first_divergence_event ? std::to_string(*r.d.first_divergence_event) : "none") + " | " +
+           std::to_string(r.d.missed_events) + " | " + std::to_string(r.d.structure_mismatches) + " | " +
+           cli::scientific(r.d.max_relative_time_error, 1) + " | " + std::to_string(r.d.recovery.failed_builds) +
+           " |\n";
+  }
+  return out;
+}
+
 // Column numbers refer to csv() above.
 std::string gnuplot_script(const std::string& csv_path, const std::string& svg_path,
                            const std::vector<std::string>& kernels, std::size_t events) {
@@ -226,6 +277,8 @@ int accuracy(cli::Args& args) {
   for (const std::string& k : kernels) cli::with_kernel("bench accuracy", k, [](const auto&) { return 0; });
   std::vector<scene::Scene> loaded;
   for (const std::string& s : scenes) loaded.push_back(scene::load_scene(data + "/" + s + ".json"));
+  std::vector<segments::Segment_scene> segment_scenes;
+  for (const Segment_case& c : segment_cases) segment_scenes.push_back(segments::load_segments(data + "/" + c.scene + ".json"));
   make_out("accuracy", out);
 
   std::vector<Row> rows;
@@ -244,14 +297,35 @@ int accuracy(cli::Args& args) {
       rows.push_back(std::move(r));
     }
   }
+  std::vector<Segment_row> segment_rows;
+  for (std::size_t i = 0; i < segment_cases.size(); ++i) {
+    const Segment_case& c = segment_cases[i];
+    const segments::Segment_exact_run exact = segments::run_exact(segment_scenes[i], c.events);
+    for (const std::string& name : c.kernels) {
+      Segment_row r;
+      r.scene = c.scene;
+      r.kernel = name;
+      if (exact.stopped_at) r.cut_at = c.events;
+      r.d = cli::with_kernel("bench accuracy", name, [&](const auto& k) {
+        return segments::compare_with(exact, k, segment_scenes[i]);
+      });
+      std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events() << " events, "
+                << cli::fixed(r.seconds(), 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
+                << ", " << r.not_reproduced() << " not reproduced\n";
+      segment_rows.push_back(std::move(r));
+    }
+  }
   const std::string csv_path = out + "/accuracy.csv", svg_path = out + "/accuracy.svg";
+  const std::string md = markdown(rows, kernels, events) + segment_table(segment_rows);
   cli::write_atomically("bench accuracy", csv_path, csv(rows));
-  cli::write_atomically("bench accuracy", out + "/accuracy.md", markdown(rows, kernels, events));
-  std::cout << markdown(rows, kernels, events);
+  cli::write_atomically("bench accuracy", out + "/accuracy-segments.csv", csv(segment_rows));
+  cli::write_atomically("bench accuracy", out + "/accuracy.md", md);
+  std::cout << md;
   // The script stays beside the data, to re-plot by hand.
   if (!run_gnuplot("accuracy", out + "/accuracy.gp", gnuplot_script(csv_path, svg_path, kernels, events), {svg_path}))
     return 0;
-  std::cerr << "kvd bench accuracy: wrote " << csv_path << ", " << out << "/accuracy.md, " << svg_path << "\n";
+  std::cerr << "kvd bench accuracy: wrote " << csv_path << ", " << out << "/accuracy-segments.csv, " << out
+            << "/accuracy.md, " << svg_path << "\n";
   return 0;
 }
 

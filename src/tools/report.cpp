@@ -38,11 +38,11 @@ struct Wide {
 };
 }  // namespace
 
-std::string scientific(const mpq_class& q) {
+std::string scientific(const mpq_class& q, int digits) {
   if (q == 0) return "0";
   Wide w(q);
   char* text = nullptr;
-  mpfr_asprintf(&text, "%.2Re", w.v);
+  mpfr_asprintf(&text, ("%." + std::to_string(digits) + "Re").c_str(), w.v);
   std::string out(text);
   mpfr_free_str(text);
   return out;

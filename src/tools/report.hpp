@@ -20,9 +20,9 @@ std::string approx(double d);
 // `digits` digits after the point.
 std::string fixed(double x, int digits);
 
-// A non-negative rational in scientific notation with three significant
-// digits ("1.25e-310": no underflow), and its base-10 logarithm (-inf for 0).
-std::string scientific(const mpq_class& q);
+// A non-negative rational in scientific notation with `digits` digits after
+// the point ("1.25e-310": no underflow), and its base-10 logarithm (-inf for 0).
+std::string scientific(const mpq_class& q, int digits = 2);
 double log10_of(const mpq_class& q);
 
 // The median of v; 0 for none.

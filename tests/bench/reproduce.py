@@ -4,12 +4,15 @@ comes out the same in a fresh run, and the pages copy the committed tables.
 
 Usage: reproduce.py KVD SOURCE_DIR WORK_DIR
 
-Re-runs the small cases (the whole accuracy suite, the thesis suite at 25
-triangles, the update suite at 100 triangles, the cost suite at 25, the aeg
+Re-runs the small cases (the whole accuracy suite, its segment scenes
+included, the thesis suite at 25 triangles, the update suite at 100
+triangles, the cost suite at 25, the aeg
 suite at 100 segments (and its rotating scenes, the long one at 30), the
 aeg-cost suite at 100, 200 and 400 segments (and 25, 50 and 100 rotating), and kvd_bench_next_root as
 committed when it is built beside kvd), compares each fresh CSV row with the
-committed row of the same key, number by number, and runs splice.py --check.
+committed row of the same key, number by number, compares the sections of
+Markdown tables that hold no timing (accuracy.md's Segment scenes, which
+README.md shows) with the fresh ones as text, and runs splice.py --check.
 Timing quantities differ from run to run and machine to machine and are
 skipped: names ending in _ms or starting with ms_, seconds, the tree and
 certificate shares of the update time, and anything named for memory (rss),
@@ -20,6 +23,9 @@ import pathlib
 import re
 import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "data" / "bench"))
+from splice import section  # noqa: E402
 
 TIMING = re.compile(r"(_ms$|^ms_|_us$|seconds|^tree_share$|^certificate_share$|rss|ratio|speedup|exponent)")
 
@@ -48,6 +54,18 @@ def compare(name, committed, fresh, key, long_form=False):
     return problems
 
 
+def untimed_section(name, committed, fresh, heading):
+    """A difference when the section `heading` of the fresh Markdown file is
+    not the committed one, line for line (splice.py's notion of a section)."""
+    old, new = section(committed, heading), section(fresh, heading)
+    if old == new:
+        return []
+    changed = [f"committed {a!r}, fresh {b!r}" for a, b in zip(old.splitlines(), new.splitlines()) if a != b]
+    if len(old.splitlines()) != len(new.splitlines()):
+        changed.append(f"{len(old.splitlines())} lines committed, {len(new.splitlines())} fresh")
+    return [f"{name} '{heading}': {c}" for c in changed]
+
+
 def run(args):
     subprocess.run(args, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
@@ -59,6 +77,9 @@ def main():
     problems = []
     run([kvd, "bench", "accuracy", "--data", data, "--out", str(work / "accuracy")])
     problems += compare("accuracy.csv", bench / "accuracy.csv", work / "accuracy" / "accuracy.csv", ["scene", "kernel"])
+    problems += compare("accuracy-segments.csv", bench / "accuracy-segments.csv",
+                        work / "accuracy" / "accuracy-segments.csv", ["scene", "kernel"])
+    problems += untimed_section("accuracy.md", bench / "accuracy.md", work / "accuracy" / "accuracy.md", "Segment scenes")
     run([kvd, "bench", "thesis", "--sizes", "25", "--events", "1000", "--data", data, "--out", str(work / "thesis")])
     problems += compare("thesis.csv", bench / "thesis.csv", work / "thesis" / "thesis.csv",
                         ["figure", "family", "size", "kernel", "quantity"], long_form=True)
