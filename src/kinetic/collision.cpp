@@ -2,10 +2,6 @@
 
 #include <algorithm>
 
-#include "kvd/geometry/plucker.hpp"
-#include "kvd/detail/kernel/instantiate.hpp"
-#include "kvd/kernel/kernel.hpp"
-
 namespace kvd::kinetic {
 
 using SP = symbolic::Symbolic_plane;
@@ -40,37 +36,7 @@ Touch touch(const scene::Scene& s, const std::vector<SV>& vertices, const std::v
   return {vertices.front(), s.edge_triangles[planes.at(1).id].front()};
 }
 
-template <class K>
-bool in_triangle(const predicates::Classifier<K>& c, const K& k, const Touch& touch, const typename K::Time& t) {
-  using P = typename K::Poly;
-  using FT = typename K::FT;
-  const Point4<P> v = c.position(touch.vertex);
-  const int w_sign = k.sign_at(v[3], t);
-  if (w_sign == 0) return false;  // a point at infinity touches nothing
-  const auto& tri = c.motion().scene().triangles[touch.triangle];
-  const Plane4<P>& plane = c.plane_poly(SP{SP::Kind::T, touch.triangle});
-  for (int axis = 0; axis < 3; ++axis) {
-    Point4<P> w{{P(), P(), P(), P()}};
-    w[axis] = P(FT(1));
-    if (k.sign_at(dot(plane, w), t) == 0) continue;  // the axis is parallel to the triangle
-    for (std::size_t i = 0; i < 3; ++i) {
-      const auto& a = c.motion().vertex(tri[i]);
-      const auto& b = c.motion().vertex(tri[(i + 1) % 3]);
-      const auto& opposite = c.motion().vertex(tri[(i + 2) % 3]);
-      const Plane4<P> side = join(a, b, w);
-      // Scene vertices have W > 0; the vertex's sign of W corrects its side.
-      if (w_sign * k.sign_at(dot(side, v), t) * k.sign_at(dot(side, opposite), t) < 0) return false;
-    }
-    return true;
-  }
-  return false;  // no axis off the plane: the triangle is degenerate at t
-}
-
 namespace {
-std::size_t object_of(const scene::Scene& s, const SP& p) {
-  return p.kind == SP::Kind::T ? s.triangle_object[p.id] : p.kind == SP::Kind::E ? s.edge_object[p.id] : s.vertex_object[p.id];
-}
-
 // The object of the feature a vertex lies on: its own, the edge it is on, or
 // the triangle whose plane defines it.
 std::size_t object_of(const scene::Scene& s, const SV& v) {
@@ -97,11 +63,7 @@ std::vector<std::size_t> contact_objects(const scene::Scene& s, const Touch& tou
 }
 
 std::vector<std::size_t> contact_objects(const scene::Scene& s, const tree::Contact& c) {
-  return pair(object_of(s, c.site), s.triangle_object[c.triangle]);
+  return pair(symbolic::object_of(s, c.site), s.triangle_object[c.triangle]);
 }
-
-#define KVD_INSTANTIATE_IN_TRIANGLE(K)                                                                     \
-  template bool in_triangle<K>(const predicates::Classifier<K>&, const K&, const Touch&, const K::Time&);
-KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_IN_TRIANGLE)
 
 }  // namespace kvd::kinetic

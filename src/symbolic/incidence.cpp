@@ -92,4 +92,13 @@ bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& given, con
   return false;
 }
 
+std::size_t object_of(const scene::Scene& s, const Symbolic_plane& p) {
+  switch (p.kind) {
+    case Symbolic_plane::Kind::T: return s.triangle_object[p.id];
+    case Symbolic_plane::Kind::E: return s.edge_object[p.id];
+    case Symbolic_plane::Kind::P: break;
+  }
+  return s.vertex_object[p.id];
+}
+
 }  // namespace kvd::symbolic

@@ -2,6 +2,7 @@
 
 #include "kvd/detail/kernel/instantiate.hpp"
 #include "kvd/kernel/kernel.hpp"
+#include "kvd/predicates/in_triangle.hpp"
 #include "kvd/symbolic/incidence.hpp"
 
 namespace kvd::tree {
@@ -13,9 +14,48 @@ using SV = Symbolic_vertex;
 }  // namespace
 
 template <class K>
-int Fragment_splitter<K>::side(const SV& v, const SP& p) const {
+int Fragment_splitter<K>::side(const SV& v, const SP& p, In_plane& in_plane) const {
   if (evaluated_) evaluated_->emplace_back(v, p);
-  return c_.side(v, p, t_);
+  const predicates::Classification c = c_.classify(v, p, t_);
+  if (c.rule == predicates::Rule::perturbation) in_plane.perturbed.push_back(v);
+  else if (c.rule != predicates::Rule::incidence) in_plane.all = false;
+  return c.side;
+}
+
+// A fragment of `cut` whose corners all lie in a triangle's plane for good
+// (the perturbation decided them, or they lie there by construction), cut
+// from a scene feature of another object lying in that plane for good (a
+// triangle sliding in another's plane), lies in the plane, and the two meet
+// where it meets the triangle. The perturbation puts it on one side, and no
+// sign changes when they come to meet (proofs/collision_response.md, case
+// (iii)). In a non-vertical triangle's cell every corner of such a fragment
+// is in the triangle, since the cell meets the plane in the triangle; the
+// exact test keeps a vertical triangle apart from the fragments in its plane
+// beside it. (A vertical triangle's fragment can have every corner in the
+// plane of a triangle below it, which it does not lie in: hence the test of
+// the feature, made only when the corners pass.)
+template <class K>
+void Fragment_splitter<K>::check_not_overlapping(const In_plane& in_plane, const SP& plane, const SP& cut) const {
+  if (plane.kind != SP::Kind::T || !in_plane.all || in_plane.perturbed.empty()) return;
+  const scene::Scene& s = c_.motion().scene();
+  // An object's own features lie in its faces' planes (an edge between two
+  // of them, a face split in two): no contact.
+  if (symbolic::object_of(s, cut) == s.triangle_object[plane.id]) return;
+  const auto feature = [&]() -> std::vector<std::size_t> {
+    switch (cut.kind) {
+      case SP::Kind::P: return {cut.id};
+      case SP::Kind::E: return {s.edges[cut.id].begin(), s.edges[cut.id].end()};
+      case SP::Kind::T: break;
+    }
+    return {s.triangles[cut.id].begin(), s.triangles[cut.id].end()};
+  }();
+  for (std::size_t v : feature)
+    if (c_.classify(SV::endpoint(v), plane, t_).rule != predicates::Rule::perturbation) return;
+  for (const SV& v : in_plane.perturbed)
+    if (predicates::in_closed_triangle(c_, v, plane.id, t_))
+      throw Build_error("a fragment of " + symbolic::to_string(cut) + " lies in the plane of triangle " +
+                            std::to_string(plane.id) + " and meets the triangle: the triangles meet at the build instant",
+                        Contact{cut, plane.id});
 }
 
 // The vertex where `edge` crosses `plane`.
@@ -47,14 +87,18 @@ void check_not_triangle(const SP& plane, const SP& cut) {
 
 template <class K>
 std::pair<Piece, Piece> Fragment_splitter<K>::split(const Fragment& f, const SP& plane, const SP& cut) const {
+  In_plane in_plane{true, {}};
   if (const auto* v = std::get_if<SV>(&f)) {
     // A point on the plane can only be one that lies there by construction
     // and never happens in priority order; it goes to the positive side.
-    if (side(*v, plane) < 0) return {f, std::nullopt};
+    const int s = side(*v, plane, in_plane);
+    check_not_overlapping(in_plane, plane, cut);
+    if (s < 0) return {f, std::nullopt};
     return {std::nullopt, f};
   }
   if (const auto* e = std::get_if<Edge_fragment>(&f)) {
-    const int sa = side(e->a, plane), sb = side(e->b, plane);
+    const int sa = side(e->a, plane, in_plane), sb = side(e->b, plane, in_plane);
+    check_not_overlapping(in_plane, plane, cut);
     if (sa <= 0 && sb <= 0 && (sa < 0 || sb < 0)) return {f, std::nullopt};
     if (sa >= 0 && sb >= 0) return {std::nullopt, f};
     check_not_triangle(plane, cut);
@@ -66,10 +110,11 @@ std::pair<Piece, Piece> Fragment_splitter<K>::split(const Fragment& f, const SP&
   std::vector<int> s;
   bool any_neg = false, any_pos = false;
   for (const auto& c : t.corners) {
-    s.push_back(side(c, plane));
+    s.push_back(side(c, plane, in_plane));
     any_neg = any_neg || s.back() < 0;
     any_pos = any_pos || s.back() > 0;
   }
+  check_not_overlapping(in_plane, plane, cut);
   if (!any_pos) return {f, std::nullopt};
   if (!any_neg) return {std::nullopt, f};
   check_not_triangle(plane, cut);

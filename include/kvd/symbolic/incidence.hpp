@@ -31,4 +31,8 @@ Symbolic_vertex canonical(const scene::Scene& s, const Symbolic_vertex& v);
 // `z_euclidean` says whether the decomposition point z is Euclidean.
 bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& v, const Symbolic_plane& p, bool z_euclidean);
 
+// The object of the feature a plane is built on: its vertex (P), edge (E) or
+// triangle (T).
+std::size_t object_of(const scene::Scene& s, const Symbolic_plane& p);
+
 }  // namespace kvd::symbolic

@@ -41,16 +41,6 @@ struct Touch {
 Touch touch(const scene::Scene& s, const std::vector<symbolic::Symbolic_vertex>& vertices,
             const std::vector<symbolic::Symbolic_plane>& planes);
 
-// Whether the vertex lies in the closed triangle at the instant t, when it
-// lies in the triangle's plane there (the certificate failing at t says so):
-// for each side, the vertex is not strictly on the other side from the
-// opposite corner, against the plane through the side and a coordinate axis
-// not parallel to the triangle. Signs at t only, exact in the exact kernel.
-// A VT failure against a vertical triangle, or a P-cut leaving a fragment (TT),
-// is no contact when this is false.
-template <class K>
-bool in_triangle(const predicates::Classifier<K>& c, const K& k, const Touch& touch, const typename K::Time& t);
-
 // The objects that meet, increasing (one when an object meets itself).
 std::vector<std::size_t> contact_objects(const scene::Scene& s, const Touch& touch);
 // Those of a crossing found by a build.

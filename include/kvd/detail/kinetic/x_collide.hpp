@@ -13,6 +13,7 @@
 #include "kvd/detail/kinetic/in_force.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kinetic/simulation.hpp"
+#include "kvd/predicates/in_triangle.hpp"
 
 namespace kvd::kinetic {
 
@@ -40,7 +41,7 @@ public:
       if (!may_collide(cert.key.type)) continue;
       const Touch th = touch(s, cert.vertices, cert.planes);
       const auto objects = contact_objects(s, th);
-      if (objects.size() < 2 || !in_triangle(c, k_, th, t)) continue;
+      if (objects.size() < 2 || !predicates::in_closed_triangle(c, th.vertex, th.triangle, t)) continue;
       m.objects.insert(m.objects.end(), objects.begin(), objects.end());
       features += (features.empty() ? "" : ", ") + std::string(to_string(cert.key.type)) + " " + kinetic::features(cert.key);
     }

@@ -1,0 +1,43 @@
+#include "kvd/predicates/in_triangle.hpp"
+
+#include "kvd/detail/kernel/instantiate.hpp"
+#include "kvd/geometry/plucker.hpp"
+#include "kvd/kernel/kernel.hpp"
+
+namespace kvd::predicates {
+
+template <class K>
+bool in_closed_triangle(const Classifier<K>& c, const symbolic::Symbolic_vertex& vertex, std::size_t triangle,
+                        const typename K::Time& t) {
+  using P = typename K::Poly;
+  using FT = typename K::FT;
+  using SP = symbolic::Symbolic_plane;
+  const K& k = c.kernel();
+  const Point4<P> v = c.position(vertex);
+  const int w_sign = k.sign_at(v[3], t);
+  if (w_sign == 0) return false;  // a point at infinity touches nothing
+  const auto& tri = c.motion().scene().triangles[triangle];
+  const Plane4<P>& plane = c.plane_poly(SP{SP::Kind::T, triangle});
+  for (int axis = 0; axis < 3; ++axis) {
+    Point4<P> w{{P(), P(), P(), P()}};
+    w[axis] = P(FT(1));
+    if (k.sign_at(dot(plane, w), t) == 0) continue;  // the axis is parallel to the triangle
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto& a = c.motion().vertex(tri[i]);
+      const auto& b = c.motion().vertex(tri[(i + 1) % 3]);
+      const auto& opposite = c.motion().vertex(tri[(i + 2) % 3]);
+      const Plane4<P> side = join(a, b, w);
+      // Scene vertices have W > 0; the vertex's sign of W corrects its side.
+      if (w_sign * k.sign_at(dot(side, v), t) * k.sign_at(dot(side, opposite), t) < 0) return false;
+    }
+    return true;
+  }
+  return false;  // no axis off the plane: the triangle is degenerate at t
+}
+
+#define KVD_INSTANTIATE_IN_CLOSED_TRIANGLE(K)                                                               \
+  template bool in_closed_triangle<K>(const Classifier<K>&, const symbolic::Symbolic_vertex&, std::size_t, \
+                                      const K::Time&);
+KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_IN_CLOSED_TRIANGLE)
+
+}  // namespace kvd::predicates
