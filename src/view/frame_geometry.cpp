@@ -24,9 +24,8 @@ std::map<symbolic::Symbolic_plane, std::array<double, 4>> site_planes(const Inst
   std::map<symbolic::Symbolic_plane, std::array<double, 4>> out;
   for (const auto& n : in.tree().nodes) {
     if (out.count(n.cut)) continue;
-    const auto& p = in.classifier().plane_poly(n.cut);
-    const mpq_class& t = in.time();
-    out[n.cut] = {p[0](t).get_d(), p[1](t).get_d(), p[2](t).get_d(), p[3](t).get_d()};
+    const Plane4<mpq_class> p = in.classifier().plane_after(n.cut, in.time());
+    out[n.cut] = {p[0].get_d(), p[1].get_d(), p[2].get_d(), p[3].get_d()};
   }
   return out;
 }

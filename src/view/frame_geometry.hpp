@@ -20,9 +20,11 @@ struct Box {
 // The box around the scene's vertices at the instant, 10% larger each way.
 Box bounds(const Instant& in);
 
-// Each cut's plane a x + b y + c z + d = 0 at the instant, its negative side
-// being the left subtree's (the classification's sign for a point of
-// positive W).
+// Each cut's plane a x + b y + c z + d = 0 as the tree keeps it just after
+// the instant (Classifier::plane_after: where the motion plane vanishes, as
+// the E-plane of an edge parallel to z does for good, its first order that
+// does not), its negative side being the left subtree's (the
+// classification's sign for a point of positive W).
 std::map<symbolic::Symbolic_plane, std::array<double, 4>> site_planes(const Instant& in);
 
 }  // namespace kvd::view
