@@ -468,6 +468,30 @@ TEST_CASE("numbers that double cannot hold are refused where double is used", "[
   CHECK(run("render " + triangles + " --view 1e400,0,0").status == 2);
   CHECK(run("render " + triangles + " --view 0,0,-1e400").status == 2);
   CHECK(run("render " + triangles + " --view 10,10,10").status == 0);
+  // A scene number beyond double's range was drawn as NaN ("-nan,nan" in
+  // every polygon) by render, animate and the viewer page, with status 0.
+  // They refuse it, naming the file and the number's place, and write nothing.
+  const std::filesystem::path folder = fresh_folder("not-drawable");
+  const std::string huge_triangles = (folder / "huge.json").string(), huge_segments = (folder / "huge-segments.json").string();
+  std::ofstream(huge_triangles) << R"({"format": "kvd-scene/1", "objects": [)" + floor_tri +
+                                       R"(, {"vertices": [["-1e400","5","0"],[1,5,0],[0,5,1]], "triangles": [[0,1,2]]}]})";
+  std::ofstream(huge_segments) << R"({"format": "kvd-segments/1", "segments": [{"endpoints": [["0","0"],["4","0"]]},
+      {"endpoints": [["3","4"],["1e400","1"]], "motion": {"translation": ["0", ["0", "-1"]]}}]})";
+  for (const auto& [scene, place] : {std::pair{huge_triangles, "/objects/1/vertices/0/0"}, std::pair{huge_segments, "/segments/1"}})
+    for (const std::string& command : {"render --view 30,-40,25 --out " + (folder / "p.svg").string(),
+                                      "animate --view 30,-40,25 --out " + (folder / "a.svg").string(),
+                                      "view --out " + (folder / "v.html").string()}) {
+      const bool segments = scene == huge_segments;
+      const std::string args = segments ? command.substr(0, command.find(' ')) + command.substr(command.find(" --out"))
+                                        : command;
+      INFO(args << " " << scene);
+      const Run r = run(args.substr(0, args.find(' ')) + " " + scene + args.substr(args.find(' ')), "2>&1");
+      CHECK(r.status == 2);
+      CHECK(r.out.find(scene + ": " + place + ":") != std::string::npos);
+      CHECK(r.out.find("in double, in which pictures are drawn") != std::string::npos);
+    }
+  CHECK(entries_without_temporary(folder) == 2);  // the two scenes
+  CHECK(run("build " + huge_triangles).status == 0);  // the exact build holds it
 }
 
 TEST_CASE("vertices of no triangle cost nothing and change no tree", "[cli][trust]") {

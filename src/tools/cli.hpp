@@ -146,18 +146,23 @@ tree::Kvd_tree build_tree(const std::string& command, const std::string& path,
   return with_disjoint_triangles(command, path, [&] { return tree::build(classifier, t); });
 }
 
-// Scene_error naming the first number of the scene that K's coefficient
-// field cannot hold (1e400 is infinite in double); the exact kernel holds all.
-template <class K>
-void require_representable(const std::string& path, const scene::Scene& s, const K& k) {
-  using FT = typename K::FT;
+// Scene_error naming the first number of the scene that the field FT cannot
+// hold (1e400 is infinite in double), "not a finite number in " `where`.
+template <class FT>
+void require_finite_in(const std::string& path, const scene::Scene& s, const std::string& where) {
   const auto bad = scene::first_number(s, [](const scene::Q& q) { return !is_finite(from_rational<FT>(q)); });
   if (!bad) return;
   throw scene::Scene_error(path + ": " + bad->place + ": " +
                            (bad->power ? "the coefficient of t^" + std::to_string(bad->power) + ", " : "") + "about " +
-                           Mpfr_number(bad->value).to_string(5) + ", is not a finite number in the " + kernel_label(k) +
-                           " kernel; use --kernel exact or mpfr:BITS");
+                           Mpfr_number(bad->value).to_string(5) + ", is not a finite number in " + where);
 }
+// The same for K's coefficient field; the exact kernel holds all.
+template <class K>
+void require_representable(const std::string& path, const scene::Scene& s, const K& k) {
+  require_finite_in<typename K::FT>(path, s, "the " + kernel_label(k) + " kernel; use --kernel exact or mpfr:BITS");
+}
+// Pictures are drawn in double: what one cannot hold would be drawn as NaN.
+inline const std::string drawn_in_double = "double, in which pictures are drawn";
 
 // Usage_error unless start <= t <= end (the span's end, when it has one).
 void require_in_span(const std::string& command, const std::string& flag, const mpq_class& t, const mpq_class& start,

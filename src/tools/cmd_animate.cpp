@@ -90,6 +90,7 @@ int animate_segments(const Scene_args& sa, const std::string& text, const std::s
   if (!ends_with(out, ".svg"))
     throw Usage_error("kvd animate: a segment scene is filmed as SVG only: --out must name an .svg file");
   const segments::Segment_scene s = sa.read_segments("animate", text);
+  require_finite_in<double>(*sa.path, s, drawn_in_double);
   if (o.until) require_in_span("animate", "--until", *o.until, s.start, s.end);
   const view::Segment_film film =
       view::segment_film(s, {o.until, o.max_events, a.sampled, a.hold, a.render.size},
@@ -150,6 +151,7 @@ int animate(Args& args) {
   if (!svg && !query::png_supported())
     throw Usage_error("kvd animate: this build has no PNG frames (cairo was not found when it was built); use .svg");
   const scene::Scene s = sa.read_scene("animate", text);
+  require_finite_in<double>(*sa.path, s, drawn_in_double);
   a.view = sa.view ? *sa.view : default_view(s);
   if (o.until) require_in_span("animate", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd animate");

@@ -50,6 +50,7 @@ int render_segments(const Scene_args& sa, const std::string& text, const std::op
   if (out && !ends_with(*out, ".svg"))
     throw Usage_error("kvd render: a segment scene is drawn as SVG only: --out must name an .svg file");
   const segments::Segment_scene s = sa.read_segments("render", text);
+  require_finite_in<double>(*sa.path, s, drawn_in_double);
   const mpq_class t = sa.time ? *sa.time : s.start;
   const Exact_kernel k;
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
@@ -90,6 +91,7 @@ int render(Args& args) {
     return render_segments(sa, text, out, o.size);
   }
   const scene::Scene s = sa.read_scene("render", text);
+  require_finite_in<double>(*sa.path, s, drawn_in_double);
   const auto& view = sa.required_view("render");
   const bool png = out && ends_with(*out, ".png");
   if (out && !png && !ends_with(*out, ".svg")) throw Usage_error("kvd render: --out must name an .svg or .png file");

@@ -191,6 +191,7 @@ void require_same_events(const std::string& path, const std::vector<Listed_event
 // The page of a segment scene's run (src/view/segment_page.hpp).
 int view_segments(const Scene_args& sa, const std::string& text, const std::string& out, const kinetic::Options& o) {
   const segments::Segment_scene s = sa.read_segments("view", text);
+  require_finite_in<double>(*sa.path, s, drawn_in_double);
   if (o.until) require_in_span("view", "--until", *o.until, s.start, s.end);
   nlohmann::json data;
   try {
@@ -269,6 +270,7 @@ int view(Args& args) {
   if (!view::page_supported())
     throw Usage_error("kvd view: this build has no viewer page (Debian's libjs-three was not found when it was built)");
   const scene::Scene s = sa.read_scene("view", scene_text);
+  require_finite_in<double>(*sa.path, s, drawn_in_double);
   if (o.until) require_in_span("view", "--until", *o.until, s);
   o.progress = progress_every_few_seconds("kvd view");
   const view::Recorded_run run = with_disjoint_triangles("view", *sa.path, [&] { return view::record_run(s, o); });

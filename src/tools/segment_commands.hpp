@@ -96,16 +96,22 @@ int segment_certify(const Scene_args& sa, const std::string& text, const Segment
 int segment_diff(const Scene_args& sa, const std::string& text, const std::string& kernel, std::size_t events,
                  const std::optional<mpq_class>& epsilon);
 
-// Scene_error naming the first segment with a number K's field cannot hold
-// (1e400 is infinite in double); the exact kernel holds all.
-template <class K>
-void require_representable(const std::string& path, const segments::Segment_scene& s, const K& k) {
+// Scene_error naming the first segment with a number the field FT cannot
+// hold (1e400 is infinite in double): "a number that is not finite in "
+// `where`.
+template <class FT>
+void require_finite_in(const std::string& path, const segments::Segment_scene& s, const std::string& where) {
   for (std::size_t e = 0; e < s.endpoint_count(); ++e)
     for (const auto& c : s.endpoint(e))
       for (const auto& q : c.coefficients())
-        if (!is_finite(from_rational<typename K::FT>(q)))
-          throw scene::Scene_error(path + ": /segments/" + std::to_string(e / 2) + ": a number that is not finite in the " +
-                                   kernel_label(k) + " kernel; use --kernel exact or mpfr:BITS");
+        if (!is_finite(from_rational<FT>(q)))
+          throw scene::Scene_error(path + ": /segments/" + std::to_string(e / 2) + ": a number that is not finite in " +
+                                   where);
+}
+// The same for K's field; the exact kernel holds all.
+template <class K>
+void require_representable(const std::string& path, const segments::Segment_scene& s, const K& k) {
+  require_finite_in<typename K::FT>(path, s, "the " + kernel_label(k) + " kernel; use --kernel exact or mpfr:BITS");
 }
 
 // Usage_error naming the flags given that only triangle scenes take.
