@@ -35,8 +35,11 @@ namespace py = pybind11;
 
 // Any number Python's Fraction takes (int, Fraction, "1/3", "0.25", and a
 // float as its exact binary value: 0.1 is 3602879701896397/2^55). inf and
-// nan, which have none, are a ValueError.
+// nan, which have none, are a ValueError; a bool, which Fraction reads as 0
+// or 1, a TypeError, as it is in a motion (the file format has no bool
+// number).
 inline mpq_class to_mpq(const py::handle& x) {
+  if (py::isinstance<py::bool_>(x)) throw py::type_error("a number is not a bool: " + py::repr(x).cast<std::string>());
   py::object fraction;
   try {
     fraction = py::module_::import("fractions").attr("Fraction")(x);

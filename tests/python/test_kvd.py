@@ -478,6 +478,23 @@ def test_a_float_is_its_exact_binary_value_in_motions_as_everywhere(run):
             run(s).set_motion(1, {"translation": [0, [0, bad]]}, 0)
 
 
+@pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
+def test_a_bool_is_no_number_anywhere(run):
+    # True counted as 1 in a triangle's coordinates and instants (Fraction
+    # takes it) but was refused in a segment's motion (the format has no
+    # bool number).
+    with pytest.raises(TypeError, match="not a bool"):
+        kvd.scene([{"vertices": [[True, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}])
+    with pytest.raises(TypeError, match="not a bool"):
+        kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, 2]]}], end=True)
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    with pytest.raises(TypeError, match="not a bool"):
+        run(s).advance_to(True)
+    with pytest.raises(kvd.SceneError):
+        run(s).set_motion(1, {"translation": [0, [0, True]]}, 0)
+    assert kvd.scene([{"vertices": [[1, 0, 0], [2, 0, 0], [1, 1, 0]], "triangles": [[0, 1, 2]]}]).start == 0
+
+
 def test_summary_says_why_the_run_stopped_once_it_has():
     # It named the record's default, "exhausted", as soon as no batch was due
     # before the limit or the event count, while set_motion could still give
