@@ -18,6 +18,7 @@
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kernel/exact_kernel.hpp"
 #include "kvd/kernel/float_kernel.hpp"
+#include "kvd/detail/scene/exact_number.hpp"
 #include "kvd/detail/scene/span_check.hpp"
 #include "kvd/detail/segments/motion_change.hpp"
 #include "kvd/segments/segment_io.hpp"
@@ -33,13 +34,20 @@ namespace py = pybind11;
 // Numbers cross in base 16: Python (3.11 on) refuses to convert integers of
 // more than 4,300 decimal digits to or from text, but not in base 16.
 
-// Any number Python's Fraction takes (int, Fraction, "1/3", "0.25", and a
-// float as its exact binary value: 0.1 is 3602879701896397/2^55). inf and
-// nan, which have none, are a ValueError; a bool, which Fraction reads as 0
-// or 1, a TypeError, as it is in a motion (the file format has no bool
+// A number: an int, a Fraction (or any number Fraction takes), a float as
+// its exact binary value (0.1 is 3602879701896397/2^55), or a str in the
+// file formats' grammar ("-7/2", "0.25", "1e-3"; scene::parse_exact_number),
+// as a str in a motion is read. inf and nan, which have no exact value, and
+// a str out of that grammar are a ValueError; a bool, which Fraction reads
+// as 0 or 1, a TypeError, as it is in a motion (the formats have no bool
 // number).
 inline mpq_class to_mpq(const py::handle& x) {
   if (py::isinstance<py::bool_>(x)) throw py::type_error("a number is not a bool: " + py::repr(x).cast<std::string>());
+  if (py::isinstance<py::str>(x)) {
+    std::string why;
+    if (auto q = scene::parse_exact_number(x.cast<std::string>(), why)) return std::move(*q);
+    throw py::value_error(py::repr(x).cast<std::string>() + " is " + why);
+  }
   py::object fraction;
   try {
     fraction = py::module_::import("fractions").attr("Fraction")(x);

@@ -495,6 +495,25 @@ def test_a_bool_is_no_number_anywhere(run):
     assert kvd.scene([{"vertices": [[1, 0, 0], [2, 0, 0], [1, 1, 0]], "triangles": [[0, 1, 2]]}]).start == 0
 
 
+@pytest.mark.parametrize("run", [kvd.KineticSegments, kvd.PaperSegments])
+def test_a_number_as_text_follows_the_file_format_everywhere(run):
+    # A str went through Fraction's grammar in coordinates and instants
+    # (" 1", "1_000", "+1" and ".5" were numbers) but through the file
+    # format's in a motion (they were not). Now the format's everywhere.
+    assert kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, 2]]}], end="1e-3").end == Fraction(1, 1000)
+    s = kvd.load_segments(segment_file("over-endpoint.json"))
+    for text in (" 1", "1_000", "+1", ".5", "1/0"):
+        with pytest.raises(ValueError, match="is .*(not a number|zero denominator)"):
+            kvd.scene([{"vertices": TRIANGLE, "triangles": [[0, 1, 2]]}], end=text)
+        with pytest.raises(ValueError):
+            run(s).advance_to(text)
+        with pytest.raises(kvd.SceneError):
+            run(s).set_motion(1, {"translation": [0, [0, text]]}, 0)
+    k = run(s)
+    k.set_motion(1, {"translation": [0, [0, "-11/10"]]}, "0")
+    assert [b["time"] for b in iter(k.advance, None)] == [str(Fraction(30, 11))]
+
+
 def test_summary_says_why_the_run_stopped_once_it_has():
     # It named the record's default, "exhausted", as soon as no batch was due
     # before the limit or the event count, while set_motion could still give
