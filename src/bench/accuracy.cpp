@@ -12,6 +12,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <utility>
 
 #include "bench.hpp"
 #include "cli.hpp"
@@ -90,6 +91,16 @@ struct Row_of {
 };
 using Row = Row_of<kinetic::Differential>;
 using Segment_row = Row_of<segments::Segment_differential>;
+
+// The row of scene and kernel, said on standard error as the suite goes.
+template <class D>
+Row_of<D> said(const std::string& scene, const std::string& kernel, D d, std::optional<std::size_t> cut_at = {}) {
+  Row_of<D> r{scene, kernel, std::move(d), cut_at};
+  std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events() << " events, "
+            << cli::fixed(r.seconds(), 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
+            << ", " << r.not_reproduced() << " not reproduced\n";
+  return r;
+}
 
 template <class R>
 std::string csv(const std::vector<R>& rows) {
@@ -284,36 +295,20 @@ int accuracy(cli::Args& args) {
   std::vector<Row> rows;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const kinetic::Exact_run exact = kinetic::run_exact(loaded[i], events);
-    for (const std::string& name : kernels) {
-      Row r;
-      r.scene = scenes[i];
-      r.kernel = name;
-      r.d = cli::with_kernel("bench accuracy", name, [&](const auto& k) {
-        return kinetic::compare_with(exact, k, loaded[i]);
-      });
-      std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events() << " events, "
-                << cli::fixed(r.seconds(), 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
-                << ", " << r.not_reproduced() << " not reproduced\n";
-      rows.push_back(std::move(r));
-    }
+    for (const std::string& name : kernels)
+      rows.push_back(said(scenes[i], name, cli::with_kernel("bench accuracy", name, [&](const auto& k) {
+                            return kinetic::compare_with(exact, k, loaded[i]);
+                          })));
   }
   std::vector<Segment_row> segment_rows;
   for (std::size_t i = 0; i < segment_cases.size(); ++i) {
     const Segment_case& c = segment_cases[i];
     const segments::Segment_exact_run exact = segments::run_exact(segment_scenes[i], c.events);
-    for (const std::string& name : c.kernels) {
-      Segment_row r;
-      r.scene = c.scene;
-      r.kernel = name;
-      if (exact.stopped_at) r.cut_at = c.events;
-      r.d = cli::with_kernel("bench accuracy", name, [&](const auto& k) {
-        return segments::compare_with(exact, k, segment_scenes[i]);
-      });
-      std::cerr << "kvd bench accuracy: " << r.scene << ", " << r.kernel << ": " << r.events() << " events, "
-                << cli::fixed(r.seconds(), 3) << " s, max relative error " << cli::scientific(r.d.max_relative_time_error)
-                << ", " << r.not_reproduced() << " not reproduced\n";
-      segment_rows.push_back(std::move(r));
-    }
+    const std::optional<std::size_t> cut_at = exact.stopped_at ? std::optional(c.events) : std::nullopt;
+    for (const std::string& name : c.kernels)
+      segment_rows.push_back(said(c.scene, name, cli::with_kernel("bench accuracy", name, [&](const auto& k) {
+                                    return segments::compare_with(exact, k, segment_scenes[i]);
+                                  }), cut_at));
   }
   const std::string csv_path = out + "/accuracy.csv", svg_path = out + "/accuracy.svg";
   const std::string md = markdown(rows, kernels, events) + segment_table(segment_rows);

@@ -10,6 +10,7 @@
 #include "kvd/detail/flat_map.hpp"
 #include "kvd/detail/geometry/plucker_impl.hpp"
 #include "kvd/detail/symbolic/scene_geometry_impl.hpp"
+#include "kvd/symbolic/incidence.hpp"
 
 namespace kvd::predicates {
 
@@ -39,19 +40,10 @@ std::optional<Point4<Interval>> at(const Motion& m, const Interval& t) {
   return p;
 }
 
-// Calls f with each scene vertex that the plane's or the point's
-// coordinates are made from (scene_geometry_impl.hpp), besides x and z.
-template <class F>
-void for_each_vertex(const scene::Scene& s, const symbolic::Symbolic_plane& p, F&& f) {
-  using P = symbolic::Symbolic_plane::Kind;
-  switch (p.kind) {
-    case P::P: f(p.id); break;
-    case P::E: f(s.edges[p.id][0]), f(s.edges[p.id][1]); break;
-    case P::T:
-      for (std::size_t v : s.triangles[p.id]) f(v);
-      break;
-  }
-}
+// Calls f with each scene vertex that the plane's (symbolic::for_each_vertex)
+// or the point's coordinates are made from (scene_geometry_impl.hpp), besides
+// x and z.
+using symbolic::for_each_vertex;
 template <class F>
 void for_each_vertex(const scene::Scene& s, const symbolic::Symbolic_vertex& v, F&& f) {
   using P = symbolic::Symbolic_plane::Kind;

@@ -41,16 +41,11 @@ void Fragment_splitter<K>::check_not_overlapping(const In_plane& in_plane, const
   // An object's own features lie in its faces' planes (an edge between two
   // of them, a face split in two): no contact.
   if (symbolic::object_of(s, cut) == s.triangle_object[plane.id]) return;
-  const auto feature = [&]() -> std::vector<std::size_t> {
-    switch (cut.kind) {
-      case SP::Kind::P: return {cut.id};
-      case SP::Kind::E: return {s.edges[cut.id].begin(), s.edges[cut.id].end()};
-      case SP::Kind::T: break;
-    }
-    return {s.triangles[cut.id].begin(), s.triangles[cut.id].end()};
-  }();
-  for (std::size_t v : feature)
-    if (c_.classify(SV::endpoint(v), plane, t_).rule != predicates::Rule::perturbation) return;
+  bool feature_in_plane = true;
+  symbolic::for_each_vertex(s, cut, [&](std::size_t v) {
+    feature_in_plane = feature_in_plane && c_.classify(SV::endpoint(v), plane, t_).rule == predicates::Rule::perturbation;
+  });
+  if (!feature_in_plane) return;
   for (const SV& v : in_plane.perturbed)
     if (predicates::in_closed_triangle(c_, v, plane.id, t_))
       throw Build_error("a fragment of " + symbolic::to_string(cut) + " lies in the plane of triangle " +

@@ -35,4 +35,17 @@ bool on_by_construction(const scene::Scene& s, const Symbolic_vertex& v, const S
 // triangle (T).
 std::size_t object_of(const scene::Scene& s, const Symbolic_plane& p);
 
+// Calls f with each scene vertex of the feature a plane is built on: its
+// vertex (P), an edge's two (E), a triangle's three (T).
+template <class F>
+void for_each_vertex(const scene::Scene& s, const Symbolic_plane& p, F&& f) {
+  switch (p.kind) {
+    case Symbolic_plane::Kind::P: f(p.id); break;
+    case Symbolic_plane::Kind::E: f(s.edges[p.id][0]), f(s.edges[p.id][1]); break;
+    case Symbolic_plane::Kind::T:
+      for (std::size_t v : s.triangles[p.id]) f(v);
+      break;
+  }
+}
+
 }  // namespace kvd::symbolic
