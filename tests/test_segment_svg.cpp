@@ -74,6 +74,33 @@ void check_picture(const Segment_scene& s, const mpq_class& t) {
       }
       CHECK(l.y1 >= l.y2 - slack);  // the floor (y1) is below the roof, y pointing down in SVG
     }
+  // The layout a page draws the picture from puts the frame, the endpoints
+  // and the crossings where the picture has them, and has its caption.
+  const Segment_layout layout = segment_layout(s, bsp, t);
+  CHECK(layout.left == Approx(x0).margin(slack));
+  CHECK(layout.top == Approx(y0).margin(slack));
+  CHECK(layout.left + layout.box_width == Approx(x1).margin(slack));
+  CHECK(layout.top + layout.box_height == Approx(y1).margin(slack));
+  CHECK(svg.find("width=\"" + std::to_string(layout.width) + "\" height=\"" + std::to_string(layout.height) + "\"") !=
+        std::string::npos);
+  const std::regex circle("class=\"endpoint\" cx=\"([^\"]+)\" cy=\"([^\"]+)\"");
+  std::size_t e = 0;
+  for (std::sregex_iterator it(svg.begin(), svg.end(), circle), end; it != end; ++it, ++e) {
+    REQUIRE(e < layout.endpoints.size());
+    CHECK(layout.endpoints[e][0] == Approx(std::stod((*it)[1])).margin(slack));
+    CHECK(layout.endpoints[e][1] == Approx(std::stod((*it)[2])).margin(slack));
+  }
+  CHECK(e == layout.endpoints.size());
+  const std::regex mark("class=\"crossing\" d=\"M([^ ]+) ([^L]+)L");
+  std::size_t k = 0;
+  for (std::sregex_iterator it(svg.begin(), svg.end(), mark), end; it != end; ++it, ++k) {
+    REQUIRE(k < layout.crossings.size());
+    CHECK(layout.crossings[k].second[0] == Approx(std::stod((*it)[1]) + 4).margin(slack));
+    CHECK(layout.crossings[k].second[1] == Approx(std::stod((*it)[2]) + 4).margin(slack));
+  }
+  CHECK(k == layout.crossings.size());
+  for (const std::string& line : layout.caption)
+    if (!line.empty()) CHECK(svg.find(">" + line + "<") != std::string::npos);
 }
 
 }  // namespace

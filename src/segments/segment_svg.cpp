@@ -167,20 +167,80 @@ View_box hull(const View_box& a, const View_box& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
-Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& bsp, const Q& t,
-                                 const Segment_svg_options& o) {
-  const Geometry g(s, t);
+namespace {
+
+// Where the view box goes in pixels, below the caption's lines, and the
+// picture's size with the legend under it.
+struct Frame {
+  View_box box;
+  Pixels px;
+  double width, height;  // of the box, in pixels
+  Segment_picture size;
+};
+
+Frame frame(const Segment_scene& s, const Q& t, const Segment_svg_options& o) {
   const View_box box = o.box ? *o.box : view_box(s, t);
   const double width = Q(box.x1 - box.x0).get_d(), height = Q(box.y1 - box.y0).get_d();
   const double scale = std::min(o.size / width, o.size / height);
   const std::size_t lines = 2 + o.notes.size();
   const Pixels px{box, scale, (o.size - width * scale) / 2, pad + line_height * static_cast<double>(lines) + 4};
   const double bottom = px.top + height * scale;
-  Segment_picture pic{o.size, static_cast<int>(std::ceil(bottom + legend_height)), {}};
+  return {box, px, width * scale, height * scale, {o.size, static_cast<int>(std::ceil(bottom + legend_height)), {}}};
+}
+
+// The points of the intersection cuts, each once, in preorder.
+std::vector<Site_point> cut_crossings(const Cylindrical_bsp& bsp, const std::vector<std::size_t>& preorder) {
+  std::vector<Site_point> out;
+  for (const std::size_t i : preorder)
+    if (const Bsp_node& n = bsp.nodes[i];
+        n.kind == Cut_kind::intersection && std::find(out.begin(), out.end(), n.point) == out.end())
+      out.push_back(n.point);
+  return out;
+}
+
+// The scene's name, t with the tree's size, then the notes.
+std::vector<std::string> caption(const Segment_scene& s, const Bsp_counts& counts, const Q& t,
+                                 const Segment_svg_options& o) {
+  std::vector<std::string> lines{s.name.empty() ? "(unnamed scene)" : s.name,
+                                 time_text(t) + ": " + std::to_string(counts.nodes) + " nodes (" +
+                                     std::to_string(counts.leaves) + " leaves), height " +
+                                     std::to_string(counts.height)};
+  lines.insert(lines.end(), o.notes.begin(), o.notes.end());
+  return lines;
+}
+
+// A pixel coordinate for a page that draws the picture itself: to a
+// millionth, finer than the picture writes it, since the page interpolates
+// the segments' lines between their endpoints (a steep one scales an error
+// in x by its slope).
+double rounded(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
+
+}  // namespace
+
+Segment_layout segment_layout(const Segment_scene& s, const Cylindrical_bsp& bsp, const Q& t,
+                              const Segment_svg_options& o) {
+  const Geometry g(s, t);
+  const Frame f = frame(s, t, o);
+  const auto at = [&](const Pt& p) { return std::array<double, 2>{rounded(f.px.x(p.x)), rounded(f.px.y(p.y))}; };
+  Segment_layout out{f.size.width, f.size.height, rounded(f.px.left), rounded(f.px.top), rounded(f.width),
+                     rounded(f.height), {}, {}, caption(s, bsp.counts(), t, o)};
+  for (std::size_t e = 0; e < s.endpoint_count(); ++e) out.endpoints.push_back(at(g.endpoint(e)));
+  for (const Site_point& c : cut_crossings(bsp, bsp.preorder())) out.crossings.emplace_back(c, at(g.point(c)));
+  return out;
+}
+
+Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& bsp, const Q& t,
+                                 const Segment_svg_options& o) {
+  const Geometry g(s, t);
+  const Frame f = frame(s, t, o);
+  const View_box& box = f.box;
+  const Pixels& px = f.px;
+  const double bottom = px.top + f.height;
+  Segment_picture pic = f.size;
 
   std::ostringstream svg;
   svg << "<rect class=\"view-box\" x=\"" << num(px.left) << "\" y=\"" << num(px.top) << "\" width=\""
-      << num(width * scale) << "\" height=\"" << num(height * scale) << "\"/>\n";
+      << num(f.width) << "\" height=\"" << num(f.height) << "\"/>\n";
   // The cell's wall abscissae, and its floor's and roof's heights there.
   const auto wall = [&](const std::optional<Site_point>& p, const Q& none) { return p ? g.point(*p).x : none; };
   const auto floor_at = [&](const Cell& c, const Q& x) { return c.floor ? g.y(*c.floor, x, true) : box.y0; };
@@ -201,7 +261,6 @@ Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& 
     line(svg, "segment", px.x(a.x), px.y(a.y), px.x(b.x), px.y(b.y));
   }
   const Bsp_counts counts = bsp.counts();
-  std::vector<Site_point> crossings;
   for (const Cut_kind kind : {Cut_kind::vertex, Cut_kind::intersection, Cut_kind::edge})
     for (const std::size_t i : nodes) {
       const Bsp_node& n = bsp.nodes[i];
@@ -219,8 +278,6 @@ Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& 
       const Q x = g.point(n.point).x;
       line(svg, kind == Cut_kind::vertex ? "vertex-cut" : "intersection-cut", px.x(x), px.y(floor_at(n.cell, x)),
            px.x(x), px.y(roof_at(n.cell, x)));
-      if (kind == Cut_kind::intersection && std::find(crossings.begin(), crossings.end(), n.point) == crossings.end())
-        crossings.push_back(n.point);
     }
   for (std::size_t e = 0; e < s.endpoint_count(); ++e) {
     const Pt& p = g.endpoint(e);
@@ -230,21 +287,17 @@ Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& 
     const Pt &a = g.endpoint(2 * i), &b = g.endpoint(2 * i + 1);
     line(svg, "marked", px.x(a.x), px.y(a.y), px.x(b.x), px.y(b.y), " data-segment=\"" + std::to_string(i) + "\"");
   }
-  for (const Site_point& c : crossings) {
+  for (const Site_point& c : cut_crossings(bsp, nodes)) {
     const double x = px.x(g.point(c).x), y = px.y(g.point(c).y);
     svg << "<path class=\"crossing\" d=\"M" << num(x - 4) << " " << num(y - 4) << "L" << num(x + 4) << " "
         << num(y + 4) << "M" << num(x - 4) << " " << num(y + 4) << "L" << num(x + 4) << " " << num(y - 4) << "\"/>\n";
   }
 
-  std::vector<std::string> caption{s.name.empty() ? "(unnamed scene)" : s.name,
-                                   time_text(t) + ": " + std::to_string(counts.nodes) + " nodes (" +
-                                       std::to_string(counts.leaves) + " leaves), height " +
-                                       std::to_string(counts.height)};
-  caption.insert(caption.end(), o.notes.begin(), o.notes.end());
-  for (std::size_t k = 0; k < caption.size(); ++k)
-    if (!caption[k].empty())
+  const std::vector<std::string> lines = caption(s, counts, t, o);
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    if (!lines[k].empty())
       svg << "<text x=\"" << num(pad) << "\" y=\"" << num(pad + 14 + line_height * static_cast<double>(k)) << "\">"
-          << escaped(caption[k]) << "</text>\n";
+          << escaped(lines[k]) << "</text>\n";
   const std::pair<const char*, std::size_t> legend[] = {{"vertex", counts.vertex_cuts},
                                                         {"intersection", counts.intersection_cuts},
                                                         {"edge", counts.edge_cuts}};

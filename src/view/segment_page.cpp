@@ -87,25 +87,30 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   for (const Run_interval& v : intervals) svg.box = segments::hull(*svg.box, segments::view_box(s, v.instant));
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
   nlohmann::json shown = nlohmann::json::array();
-  int width = 0, height = 0;
+  segments::Segment_layout layout;
   for (const Run_interval& v : intervals) {
     const std::string text = v.tree.text();
     if (segments::build_cylindrical_bsp(pred, Exact_time(v.instant)).text() != text)
       throw Segment_page_invalid("the tree in force at t = " + v.instant.get_str() +
                                  " differs from a fresh build there");
-    svg.marked.clear();
+    std::vector<std::size_t> marked;
     if (v.batch)
       for (const auto& key : batches[*v.batch].failing)
         for (const std::size_t seg : segments::named_segments(key))
-          if (std::find(svg.marked.begin(), svg.marked.end(), seg) == svg.marked.end()) svg.marked.push_back(seg);
+          if (std::find(marked.begin(), marked.end(), seg) == marked.end()) marked.push_back(seg);
     svg.notes = {v.batch ? "after batch " + std::to_string(*v.batch + 1) + " of " + std::to_string(batches.size())
                          : "before the first batch"};
-    const segments::Segment_picture pic = segments::draw_segment_bsp(s, v.tree, v.instant, svg);
-    width = pic.width;
-    height = pic.height;
+    // The page draws the picture from the tree and these positions: a
+    // picture written out here was some 200 bytes a cell (17 MiB for
+    // random-100.json's 90 intervals).
+    layout = segments::segment_layout(s, v.tree, v.instant, svg);
+    nlohmann::json endpoints = nlohmann::json::array(), crossings = nlohmann::json::object();
+    for (const auto& [x, y] : layout.endpoints) endpoints.insert(endpoints.end(), {x, y});
+    for (const auto& [c, at] : layout.crossings) crossings[segments::point_name(c)] = at;
     const segments::Bsp_counts c = v.tree.counts();
-    shown.push_back({{"instant", v.instant.get_str()}, {"picture", pic.elements}, {"tree", text},
-                     {"nodes", c.nodes}, {"height", c.height}});
+    shown.push_back({{"instant", v.instant.get_str()}, {"tree", text}, {"nodes", c.nodes}, {"height", c.height},
+                     {"caption", layout.caption}, {"endpoints", endpoints}, {"crossings", crossings},
+                     {"marked", marked}});
     if (draw_progress) draw_progress(shown.size(), intervals.size());
   }
   nlohmann::json list = nlohmann::json::array();
@@ -113,7 +118,7 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   // The time reached: the last batch's, or the limit when the page stopped
   // there or ran out of failures before it, as kvd simulate says.
   const Exact_time reached = stopped != "events" && limit ? Exact_time(*limit) : run.now();
-  return {{"format", "kvd-segment-view/1"},
+  return {{"format", "kvd-segment-view/2"},
           {"title", title},
           {"scene", s.name},
           {"segments", s.segments.size()},
@@ -122,8 +127,9 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
           {"stopped", stopped},
           {"time_reached", k.to_string(reached)},
           {"time_reached_approx", approx(k.to_double(reached))},
-          {"width", width},
-          {"height", height},
+          {"width", layout.width},
+          {"height", layout.height},
+          {"frame", {layout.left, layout.top, layout.box_width, layout.box_height}},
           {"style", segments::segment_svg_style()},
           {"batches", list},
           {"intervals", shown}};

@@ -1,10 +1,12 @@
 // The data of a kvd view page of a scene of moving segments (format
-// kvd-segment-view/1, read by web/segments.js): an exact run of
+// kvd-segment-view/2, read by web/segments.js): an exact run of
 // Kinetic_segment_bsp, its batches with each failing certificate's kind,
 // features and event, and for each interval of the run (before the first
-// batch, after each) the picture of the tree in force at a rational instant
-// inside it (kvd/segments/segment_svg.hpp, the segments a batch's failing
-// certificates name marked) and the tree's text. Every interval's tree is
+// batch, after each) the tree in force at a rational instant inside it, as
+// text, with what the page needs to draw it as kvd/segments/segment_svg.hpp
+// does (segment_layout: the pixel positions of the endpoints and of the
+// crossings cut through, the caption) and the segments a batch's failing
+// certificates name, which it marks. Every interval's tree is
 // compared with a fresh build at its instant: a difference is a failed
 // validation, and no data is made.
 #pragma once

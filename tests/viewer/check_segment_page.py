@@ -9,6 +9,11 @@ check_page.py does) and checks them against kvd's own output:
     events by kind and each failing certificate, marks in the picture the
     segments they name, and draws a tree whose nodes and height are those of
     kvd build at the instant the page says it drew;
+  * the picture the page draws from the tree is the one kvd render draws at
+    that instant: every cell, segment, cut, endpoint and crossing, in the
+    same order and class, at the same place (the page's pixels mapped to
+    render's by the scale and shift that take its endpoints to render's,
+    within a hundredth of a pixel);
   * the left arrow key selects the interval before.
 
 check_page.py runs these checks on the segment scenes it is given.
@@ -31,6 +36,75 @@ def built(kvd, scene, time):
     out = subprocess.run([kvd, "build", scene, "--time", time, "--json"], check=True, stdout=subprocess.PIPE,
                          text=True).stdout
     return json.loads(out)
+
+
+def numbers(attributes):
+    """The numbers in the attributes' values, in order."""
+    values = " ".join(re.findall(r'="([^"]*)"', attributes))
+    return [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", values)]
+
+
+def shapes(svg_elements):
+    """The drawn elements of a picture, by kind: (class, [numbers]) of every
+    cell polygon, line (the legend's and the marked segments' left out),
+    endpoint circle and crossing mark, the crossings apart (the page lists
+    them by name, render in preorder)."""
+    out = []
+    for m in re.finditer(r'<(polygon|line|circle|path) class="([^"]+)"([^>]*)/?>', svg_elements):
+        tag, cls, attributes = m.groups()
+        if cls.startswith("legend") or cls == "marked":  # the marked segments are checked on their own
+            continue
+        attributes = re.sub(r'data-segment="\d+"', "", attributes)
+        if tag == "circle":
+            attributes = re.sub(r'r="[^"]+"', "", attributes)
+        out.append((cls.split()[0], numbers(attributes)))
+    crossings = [v for c, v in out if c == "crossing"]
+    return [x for x in out if x[0] != "crossing"], crossings
+
+
+def frame(svg_elements):
+    """The view box's sides in pixels: (left, right), (top, bottom)."""
+    m = re.search(r'<rect class="view-box"([^>]*)>', svg_elements)
+    x, y, w, h = (float(re.search(f'{k}="([^"]+)"', m.group(1)).group(1)) for k in ("x", "y", "width", "height"))
+    return (x, x + w), (y, y + h)
+
+
+def check_drawn_as_render(d, kvd, scene, instant, outdir, name):
+    page_svg = d.execute_script("return document.getElementById('picture').innerHTML")
+    rendered = os.path.join(outdir, "render.svg")
+    subprocess.run([kvd, "render", scene, "--time", instant, "--out", rendered], check=True)
+    page, page_crossings = shapes(page_svg)
+    ref, ref_crossings = shapes(open(rendered).read())
+    if [c for c, _ in page] != [c for c, _ in ref] or len(page_crossings) != len(ref_crossings):
+        fail(f"{name}: t = {instant}: the page draws other elements than kvd render")
+    ends = [(v, w) for (c, v), (_, w) in zip(page, ref) if c == "endpoint"]
+    # Pixel x' = a x + b, y' = a y + c, from the two endpoints farthest apart.
+    (p0, r0), (p1, r1) = min(ends, key=lambda e: e[0][0] + e[0][1]), max(ends, key=lambda e: e[0][0] + e[0][1])
+    a = (r1[0] - r0[0]) / (p1[0] - p0[0]) if p1[0] != p0[0] else (r1[1] - r0[1]) / (p1[1] - p0[1])
+    b, c = r0[0] - a * p0[0], r0[1] - a * p0[1]
+    tolerance = 0.01 * max(1.0, a)
+    # The two draw different regions (the page the hull of its instants'):
+    # a side a cell or cut lacks is drawn on the view box's frame, which is
+    # then the other's frame too.
+    page_frame, ref_frame = frame(page_svg), frame(open(rendered).read())
+    def agree(k, x, y):
+        for p_side, r_side in zip(page_frame[k % 2], ref_frame[k % 2]):
+            if abs(x - p_side) <= 0.01:
+                return abs(y - r_side) <= 0.01
+        return abs(a * x + (b if k % 2 == 0 else c) - y) <= tolerance
+    for (cls, v), (_, w) in zip(page, ref):
+        if len(v) != len(w) or not all(agree(k, x, y) for k, (x, y) in enumerate(zip(v, w))):
+            fail(f"{name}: t = {instant}: a {cls} the page draws at {v}, kvd render at {w} (scale {a}, "
+                 f"shift {b}, {c})")
+    def mapped(v):
+        return [a * x + (b if k % 2 == 0 else c) for k, x in enumerate(v)]
+    # A crossing's mark is a cross 8 pixels wide in both: its centre is compared.
+    def centre(v):
+        return [v[0] + 4, v[1] + 4]
+    for v, w in zip(sorted(mapped(centre(v)) for v in page_crossings), sorted(centre(w) for w in ref_crossings)):
+        if any(abs(x - y) > tolerance for x, y in zip(v, w)):
+            fail(f"{name}: t = {instant}: a crossing the page marks at {v}, kvd render at {w}")
+    return len(page)
 
 
 def check_segment_page(d, kvd, scene, events, outdir):
@@ -74,6 +148,7 @@ def check_segment_page(d, kvd, scene, events, outdir):
         leaves = len(d.find_elements(By.CSS_SELECTOR, "#picture polygon.cell"))
         if leaves != fresh["leaves"]:
             fail(f"{name}: batch {k}: {leaves} cells drawn, kvd build has {fresh['leaves']} leaves")
+        check_drawn_as_render(d, kvd, scene, m.group(1), outdir, name)
     d.find_element(By.TAG_NAME, "body").send_keys(Keys.ARROW_LEFT)
     selected = d.find_elements(By.CSS_SELECTOR, "#timeline li.selected")
     if len(selected) != 1 or selected[0].get_attribute("data-interval") != str(len(expected) - 1):

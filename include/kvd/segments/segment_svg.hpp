@@ -14,8 +14,10 @@
 // The y axis points up.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kvd/segments/cylindrical_bsp.hpp"
@@ -56,6 +58,21 @@ struct Segment_picture {
 // `notes`) and a legend counting the cuts of each kind.
 Segment_picture draw_segment_bsp(const Segment_scene& s, const Cylindrical_bsp& bsp, const Q& t,
                                  const Segment_svg_options& options = {});
+// Where the parts of that picture go, in pixels, for a page that draws it
+// itself from the tree's text (web/segments.js, which follows
+// draw_segment_bsp): the picture's size, the view box's frame, every
+// endpoint, every crossing the tree cuts through (in the preorder of its
+// first intersection cut), and the caption's lines. Each number is rounded
+// to a millionth of a pixel.
+struct Segment_layout {
+  int width = 0, height = 0;
+  double left = 0, top = 0, box_width = 0, box_height = 0;  // the view box's frame
+  std::vector<std::array<double, 2>> endpoints;               // endpoint e at e
+  std::vector<std::pair<Site_point, std::array<double, 2>>> crossings;
+  std::vector<std::string> caption;
+};
+Segment_layout segment_layout(const Segment_scene& s, const Cylindrical_bsp& bsp, const Q& t,
+                              const Segment_svg_options& options = {});
 // The <style> element that gives the classes their look, once per document.
 std::string segment_svg_style();
 // The same picture as an SVG document on a white background.
