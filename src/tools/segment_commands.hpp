@@ -5,13 +5,16 @@
 
 #include <gmpxx.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/segments/kinetic_segment_bsp.hpp"
+#include "left_at_exit.hpp"
 
 namespace kvd::cli {
 
@@ -49,6 +52,21 @@ struct Batches_run {
   std::size_t batches = 0, failures = 0;
   Time time_reached;
 };
+
+// A run made with `args` and kept to the exit (left_at_exit), with the
+// milliseconds its construction took: the tree and its certificates (some
+// 16 s for 12,800 segments on the kept set, which holds 1.4 million).
+template <class Run>
+struct Started_run {
+  Run& run;
+  double construction_ms;
+};
+template <class Run, class... Args>
+Started_run<Run> start_run(Args&&... args) {
+  const auto start = std::chrono::steady_clock::now();
+  Run& run = left_at_exit<Run>(std::forward<Args>(args)...);
+  return {run, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()};
+}
 
 // Advances `run` (a kinetic segment BSP of kernel k) batch by batch up to
 // o.until or the batch holding the o.max_events-th failure, handing each
