@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <forward_list>
 #include <type_traits>
 #include <vector>
 
@@ -29,22 +30,30 @@ R dot(const H<R>& a, const H<R>& b) {
 
 // The endpoints over one ring, with the lines and crossings made from them,
 // kept when `cache` is set (the unperturbed ring: a construction asks for the
-// same lines and crossings many times).
+// same lines and crossings many times). Over a ring whose numbers copy
+// without allocating (the filter's intervals) they are handed out by value;
+// over polynomials by reference, into the cache or, without one, into this
+// view's own store: a copy of three polynomials from the cache was a tenth
+// of the kept set's construction.
 template <class R>
 class View {
+  static constexpr bool by_value = std::is_trivially_copyable_v<R>;
+
 public:
+  using Coordinates = std::conditional_t<by_value, H<R>, const H<R>&>;
+
   View(const std::vector<H<R>>& e, Geometry_cache<R>* cache) : e_(e), cache_(cache) {}
 
   const H<R>& endpoint(std::size_t k) const { return e_[k]; }
-  H<R> line(std::size_t s) const {
-    if (!cache_) return wedge(e_[2 * s], e_[2 * s + 1]);
+  Coordinates line(std::size_t s) const {
+    if (!cache_) return made(wedge(e_[2 * s], e_[2 * s + 1]));
     auto& l = cache_->lines[s];
     if (!l) l = wedge(e_[2 * s], e_[2 * s + 1]);
     return *l;
   }
-  H<R> point(const Site_point& p) const {
+  Coordinates point(const Site_point& p) const {
     if (p.kind == Site_point::Kind::endpoint) return e_[p.a];
-    if (!cache_) return wedge(line(p.a), line(p.b));
+    if (!cache_) return made(wedge(line(p.a), line(p.b)));
     const std::uint64_t key = (std::uint64_t(p.a) << 32) | p.b;
     auto it = cache_->crossings.find(key);
     if (it == cache_->crossings.end()) it = cache_->crossings.emplace(key, wedge(line(p.a), line(p.b))).first;
@@ -63,8 +72,14 @@ public:
   }
 
 private:
+  Coordinates made(H<R>&& h) const {
+    if constexpr (by_value) return h;
+    else return made_.emplace_front(std::move(h));  // a list: what it handed out stays where it is
+  }
+
   const std::vector<H<R>>& e_;
   Geometry_cache<R>* cache_;
+  mutable std::forward_list<H<R>> made_;  // empty, it allocates nothing
 };
 
 // The factors of a certificate: the sign of their product is its sign.
@@ -79,7 +94,7 @@ std::vector<R> factors_of(const Segment_certificate_key& key, const View<R>& e) 
   using Kind = Segment_certificate_key::Kind;
   switch (key.kind) {
     case Kind::x_order: {
-      const H<R> pa = e.point(key.p), pb = e.point(key.q);
+      const H<R>&pa = e.point(key.p), &pb = e.point(key.q);
       std::vector<R> f{pa[0] * pb[2] - pb[0] * pa[2]};
       if (key.p.kind == Site_point::Kind::crossing) f.push_back(pa[2]);
       if (key.q.kind == Site_point::Kind::crossing) f.push_back(pb[2]);
@@ -87,7 +102,7 @@ std::vector<R> factors_of(const Segment_certificate_key& key, const View<R>& e) 
     }
     case Kind::side: return e.side_factors(e.point(key.p), key.i, key.p.kind == Site_point::Kind::endpoint);
     case Kind::order_at: {
-      const H<R> q = e.point(key.p);
+      const H<R>& q = e.point(key.p);
       const H<R> vertical{q[2], R(), -q[0]};
       return e.side_factors(wedge(e.line(key.i), vertical), key.j, false);
     }
