@@ -183,7 +183,7 @@ Segment_sign Segment_predicates<K>::decide_by_rules(const Segment_certificate_ke
       if (recorder_) recorder_(key, {}, node_, *s);
       return {*s, Segment_rule::held};
     }
-  const std::vector<P> v = detail::factors_of(key, View<P>(endpoints_, &cache_));
+  std::vector<P> v = detail::factors_of(key, View<P>(endpoints_, &cache_));
   std::optional<std::vector<Poly<P>>> expanded;
   std::vector<P> deciding;
   int sign = 1;
@@ -198,7 +198,7 @@ Segment_sign Segment_predicates<K>::decide_by_rules(const Segment_certificate_ke
         at_root = true;
       }
       sign *= s;
-      if (recorder_ && v[f].degree() > 0) deciding.push_back(v[f]);
+      if (recorder_ && v[f].degree() > 0) deciding.push_back(std::move(v[f]));  // v[f] is not read again
       continue;
     }
     if (!expanded) expanded = detail::factors_of(key, View<Poly<P>>(perturbed_, nullptr));
