@@ -31,6 +31,13 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
   return n;
 }
 
+// The text (Cylindrical_bsp::text) of subtree k of the page's table.
+std::string text_of(const nlohmann::json& table, std::size_t k) {
+  const nlohmann::json& e = table.at(k);
+  if (e.is_null()) return ".";
+  return "(" + e.at(0).get<std::string>() + " " + text_of(table, e.at(1)) + " " + text_of(table, e.at(2)) + ")";
+}
+
 // Checks the page's data of scene s against a run of its own.
 void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t max_events,
                 const std::optional<mpq_class>& until = std::nullopt) {
@@ -71,7 +78,7 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
     else CHECK(k.compare(Exact_time(instant), begins) > 0);
     if (limit) CHECK(instant <= *limit);
     if (const auto next = run.next_event_time()) CHECK(k.compare(Exact_time(instant), *next) < 0);
-    const std::string tree = intervals[i].at("tree");
+    const std::string tree = text_of(data.at("subtrees"), intervals[i].at("root"));
     CHECK(tree == run.tree().text());
     CHECK(tree == build_cylindrical_bsp(pred, Exact_time(instant)).text());
     std::set<std::size_t> marked;

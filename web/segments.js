@@ -1,7 +1,8 @@
 // The kvd view page of a scene of moving segments: reads the
 // kvd-segment-view/2 data that `kvd view` inlines (src/view/segment_page.hpp):
-// for each interval of the run (before the first batch, then after each) the
-// tree, which the page draws, and the pixel positions it is drawn with; and
+// the trees of the run as one table of distinct subtrees; for each interval
+// of the run (before the first batch, then after each) its tree's root
+// there, which the page draws, and the pixel positions it is drawn with; and
 // the batches. Exact numbers stay strings.
 (function () {
   'use strict';
@@ -23,20 +24,19 @@
       ' failures) from t = ' + data.start + ' to t ≈ ' + data.time_reached_approx + ', stopped: ' + data.stopped +
       '. Every tree shown equals a fresh build at its instant.';
 
-  // "(V s3.0 L R)" -> {label: 'V s3.0', kind: 'V', name: 's3.0', children: [L, R]}; "." -> null.
-  function parseTree(s) {
-    const tokens = s.match(/\(|\)|[^\s()]+/g) || [];
-    let at = 0;
-    function node() {
-      const t = tokens[at++];
-      if (t === '.') return null;
-      if (t !== '(') throw new Error('unexpected ' + t + ' in the tree');
-      const kind = tokens[at++], name = tokens[at++];
-      const children = [node(), node()];
-      if (tokens[at++] !== ')') throw new Error('unbalanced tree');
-      return { label: kind + ' ' + name, kind, name, children };
+  // Subtree k of the table (data.subtrees: [cut, left, right], null for a
+  // leaf) -> {label: 'V s3.0', kind: 'V', name: 's3.0', children: [L, R]};
+  // a leaf -> null. A subtree the intervals share is one object.
+  const subtrees = [];
+  function subtree(k) {
+    if (subtrees[k] !== undefined) return subtrees[k];
+    const e = data.subtrees[k];
+    let n = null;
+    if (e) {
+      const [kind, name] = e[0].split(' ');
+      n = { label: e[0], kind, name, children: [subtree(e[1]), subtree(e[2])] };
     }
-    return node();
+    return (subtrees[k] = n);
   }
 
   // The picture of interval v, as draw_segment_bsp draws it
@@ -163,7 +163,7 @@
     selected = i;
     items[i].classList.add('selected');
     const v = data.intervals[i];
-    const root = parseTree(v.tree);
+    const root = subtree(v.root);
     picture.innerHTML = data.style + drawPicture(v, root);
     const batch = i > 0 ? data.batches[i - 1] : null;
     const info = el('event-info');

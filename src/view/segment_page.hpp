@@ -2,8 +2,9 @@
 // kvd-segment-view/2, read by web/segments.js): an exact run of
 // Kinetic_segment_bsp, its batches with each failing certificate's kind,
 // features and event, and for each interval of the run (before the first
-// batch, after each) the tree in force at a rational instant inside it, as
-// text, with what the page needs to draw it as kvd/segments/segment_svg.hpp
+// batch, after each) the tree in force at a rational instant inside it (the
+// trees as one table of distinct subtrees, tree_table.hpp), with what the
+// page needs to draw it as kvd/segments/segment_svg.hpp
 // does (segment_layout: the pixel positions of the endpoints and of the
 // crossings cut through, the caption) and the segments a batch's failing
 // certificates name, which it marks. Every interval's tree is
