@@ -18,11 +18,14 @@ bool integral(const std::vector<mpq_class>& v) {
 
 bool integer_product(const std::vector<mpq_class>& a, const std::vector<mpq_class>& b, std::vector<mpq_class>& out) {
   if (!integral(a) || !integral(b)) return false;
-  out.assign(a.size() + b.size() - 1, mpq_class());
+  out.clear();
+  out.resize(a.size() + b.size() - 1);  // zeros made, not copied: a copy allocates both limbs
   for (std::size_t k = 0; k < out.size(); ++k) {
     mpz_ptr sum = mpq_numref(out[k].get_mpq_t());  // the denominator stays 1
     const std::size_t first = k >= b.size() ? k - (b.size() - 1) : 0, last = std::min(k, a.size() - 1);
-    for (std::size_t i = first; i <= last; ++i) mpz_addmul(sum, a[i].get_num_mpz_t(), b[k - i].get_num_mpz_t());
+    // The first product sized at once, the others added to it.
+    mpz_mul(sum, a[first].get_num_mpz_t(), b[k - first].get_num_mpz_t());
+    for (std::size_t i = first + 1; i <= last; ++i) mpz_addmul(sum, a[i].get_num_mpz_t(), b[k - i].get_num_mpz_t());
   }
   return true;
 }
