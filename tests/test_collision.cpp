@@ -218,6 +218,132 @@ TEST_CASE("a triangle sliding in another's plane is reversed where they first me
   check_never_interpenetrate(s, sim);
 }
 
+namespace {
+// A static vertical wall (object 0) and a vertical pane (object 1) moving
+// towards it from a parallel plane, lying in the wall's plane at exactly
+// t = 1 (y = 0; x = y in the "rotated" scenes, the pane moving along
+// (-1, 1, 0); others as said), and a horizontal triangle (object 2) far
+// away.
+struct Flat_scene {
+  const char* name;
+  const char* wall;
+  const char* pane;
+  const char* translation;
+  bool meet;  // whether the two meet at t = 1
+  const char* wall_triangles = "[[0,1,2]]";
+  const char* pane_triangles = "[[0,1,2]]";
+};
+const Flat_scene flat_scenes[] = {
+    {"the pane inside the wall", "[[0,0,0],[4,0,0],[0,0,4]]", "[[1,1,1],[2,1,1],[1,1,2]]", "[0,[0,-1],0]", true},
+    {"the wall inside the pane", "[[1,0,1],[2,0,1],[1,0,2]]", "[[0,1,0],[4,1,0],[0,1,4]]", "[0,[0,-1],0]", true},
+    // A star: each crosses two sides of the other, no corner inside it.
+    {"crossing, no corner inside", "[[0,0,0],[6,0,0],[3,0,6]]", "[[0,1,4],[6,1,4],[3,1,-2]]", "[0,[0,-1],0]", true},
+    {"rotated, the pane inside", "[[0,0,0],[4,4,0],[0,0,4]]", "[[2,0,1],[3,1,1],[2,0,2]]", "[[0,-1],[0,1],0]", true},
+    {"rotated, crossing", "[[0,0,0],[6,6,0],[3,3,6]]", "[[1,-1,4],[7,5,4],[4,2,-2]]", "[[0,-1],[0,1],0]", true},
+    // In x + y = 0; the full set's failures name threads (a point of a
+    // pane's edge against the wall's E-plane), not the pane's corners.
+    {"in x + y = 0", "[[-1,1,3],[0,0,-1],[1,-1,3]]", "[[-2,4,0],[4,-2,0],[4,-2,4]]", "[[0,-1],[0,-1],0]", true},
+    // Two triangles each, in x + 2y = 0: the wall's first meets the pane's
+    // first, and the certificates that fail name the wall's second.
+    {"two triangles each", "[[-6,3,-2],[-4,2,-3],[4,-2,-4],[-8,4,2],[0,0,3],[6,-3,4]]",
+     "[[3,1,-3],[-5,5,2],[-5,5,-2],[-1,3,0],[5,0,-2],[7,-1,2]]", "[[0,-1],[0,-2],0]", true, "[[0,1,2],[3,4,5]]",
+     "[[0,1,2],[3,4,5]]"},
+    // In 2x = y: the pane's corner reaches the wall's corner (0, 0, 3), and
+    // the one certificate failing is VV against P of that corner, y = 0.
+    {"corner to corner", "[[2,4,3],[2,4,-1],[0,0,3]]", "[[-1,-7,0],[-2,-9,2],[2,-1,3]]", "[[0,-2],[0,1],0]", true},
+    // Beside the wall in its plane at t = 1, apart.
+    {"a near miss", "[[0,0,0],[4,0,0],[0,0,4]]", "[[5,1,1],[6,1,1],[5,1,2]]", "[0,[0,-1],0]", false},
+    {"rotated, a near miss", "[[0,0,0],[4,4,0],[0,0,4]]", "[[6,4,1],[7,5,1],[6,4,2]]", "[[0,-1],[0,1],0]", false},
+};
+
+scene::Scene flat_scene(const Flat_scene& f, int seed) {
+  return scene::read_scene(std::string(R"({"format": "kvd-scene/1", "time": {"start": 0, "end": 2}, "priority": {"seed": )") +
+                               std::to_string(seed) + R"(}, "objects": [
+    {"vertices": )" + f.wall + R"(, "triangles": )" + f.wall_triangles + R"(},
+    {"vertices": )" + f.pane + R"(, "triangles": )" + f.pane_triangles + R"(, "motion": {"translation": )" +
+                               f.translation + R"(}},
+    {"vertices": [[20,20,5],[24,20,5],[20,24,5]], "triangles": [[0,1,2]]}]})",
+                           "inline.json");
+}
+}  // namespace
+
+TEST_CASE("vertical triangles landing flat in one plane are reversed when they overlap there", "[collision][kinetic]") {
+  // No VT certificate watches a vertical triangle's plane: the failures at
+  // t = 1 are VV (a P-plane y = const is the wall's plane), VE (the E-plane
+  // of a wall's edge is its plane), TT of the wall's corners against the
+  // pane, or the full set's threads, and the pane's vertex in the wall (or
+  // a triangle of either in the plane meeting one of the other) makes them
+  // a contact. A near miss is none: the run passes t = 1.
+  const auto f = GENERATE(from_range(std::begin(flat_scenes), std::end(flat_scenes)));
+  const auto seed = GENERATE(0, 1, 2);
+  const auto [update, set] = GENERATE(table<kinetic::Update, kinetic::Certificate_set>(
+      {{kinetic::Update::local, kinetic::Certificate_set::reduced},
+       {kinetic::Update::reinsert, kinetic::Certificate_set::reduced},
+       {kinetic::Update::rebuild, kinetic::Certificate_set::full}}));
+  INFO(f.name << ", seed " << seed);
+  const scene::Scene s = flat_scene(f, seed);
+  // The oracle: unreversed, the two meet at t = 1 exactly when they overlap.
+  CHECK(scene::first_conflict(s, scene::triangles_at(s, mpq_class(1))).has_value() == f.meet);
+  const auto sim = run(s, update, set);
+  CHECK(sim.valid());
+  CHECK(!sim.collision);
+  if (f.meet) {
+    REQUIRE(sim.motion_changes.size() == 1);
+    CHECK(sim.motion_changes[0].objects == std::vector<std::size_t>{1});
+    CHECK(k.compare(sim.motion_changes[0].collision, Exact_time(mpq_class(1))) == 0);
+    CHECK(sim.motion_changes[0].contact.find("vertical") != std::string::npos);
+  } else {
+    CHECK(sim.motion_changes.empty());
+    CHECK(k.compare(sim.time_reached, Exact_time(mpq_class(2))) == 0);
+  }
+  check_never_interpenetrate(s, sim);
+  // And at t = 1 itself, with the motions in force: reversed, or apart.
+  const scene::Scene now = kinetic::motions_at(s, sim.motion_changes, mpq_class(1));
+  CHECK(!scene::first_conflict(now, scene::triangles_at(now, mpq_class(1))));
+}
+
+TEMPLATE_TEST_CASE("every kernel answers vertical triangles landing flat alike", "[collision][kinetic]", KVD_ALL_KERNELS) {
+  const auto f = GENERATE(from_range(std::begin(flat_scenes), std::end(flat_scenes)));
+  INFO(f.name);
+  const scene::Scene s = flat_scene(f, 1);
+  TestType kernel;
+  kinetic::Options o;
+  o.max_events = 1000;
+  const auto sim = kinetic::simulate(kernel, s, o);
+  CHECK(sim.valid());
+  CHECK(!sim.collision);
+  REQUIRE(sim.motion_changes.size() == (f.meet ? 1u : 0u));
+  if (f.meet) {
+    CHECK(std::abs(kernel.to_double(sim.motion_changes[0].collision) - 1.0) < 1e-6);
+    CHECK(sim.motion_changes[0].time < 1);
+    CHECK(sim.motion_changes[0].objects == std::vector<std::size_t>{1});
+  }
+}
+
+TEMPLATE_TEST_CASE("coplanar_triangles_meet: two triangles in one plane meet by a corner inside or by crossing sides",
+                   "[collision]", KVD_ALL_KERNELS) {
+  // All in the plane y = 0 at t = 0 (object 1 reaches it then): triangle 0
+  // is the wall; 1 lies inside it, 2 crosses it like a star, 3 touches its
+  // long side with a corner, 4 shares a line with its base, overlapping,
+  // 5 is beside it, 6 beside its long side.
+  const scene::Scene s = scene::read_scene(R"({"format": "kvd-scene/1", "time": {"start": -1, "end": 1}, "objects": [
+    {"vertices": [[0,0,0],[6,0,0],[3,0,6]], "triangles": [[0,1,2]]},
+    {"vertices": [[2,0,1],[3,0,1],[3,0,2], [0,0,4],[6,0,4],[3,0,-2], [5,0,2],[7,0,2],[7,0,4],
+                  [5,0,0],[9,0,0],[7,0,-1], [8,0,0],[9,0,0],[8,0,1], [6,0,4],[8,0,3],[8,0,5]],
+     "triangles": [[0,1,2],[3,4,5],[6,7,8],[9,10,11],[12,13,14],[15,16,17]],
+     "motion": {"translation": [0,[0,-1],0]}}]})",
+                                           "inline.json", {.seed = std::nullopt, .allow_intersecting = true});
+  TestType k;
+  const predicates::Classifier<TestType> c(k, s);
+  const auto at0 = k.time(from_rational<typename TestType::FT>(mpq_class(0)));
+  const bool expected[] = {true, true, true, true, false, false};
+  for (std::size_t t = 1; t <= 6; ++t) {
+    INFO("triangle " << t);
+    CHECK(predicates::coplanar_triangles_meet(c, t, 0, at0) == expected[t - 1]);
+    CHECK(predicates::coplanar_triangles_meet(c, 0, t, at0) == expected[t - 1]);
+  }
+}
+
 TEMPLATE_TEST_CASE("a build at an instant finds coplanar triangles meeting exactly when the scene oracle does",
                    "[collision]", KVD_ALL_KERNELS) {
   // The floor in z = 0, and in the same plane a triangle sliding in -x

@@ -36,9 +36,6 @@ Touch touch(const scene::Scene& s, const std::vector<SV>& vertices, const std::v
   return {vertices.front(), s.edge_triangles[planes.at(1).id].front()};
 }
 
-namespace {
-// The object of the feature a vertex lies on: its own, the edge it is on, or
-// the triangle whose plane defines it.
 std::size_t object_of(const scene::Scene& s, const SV& v) {
   switch (v.kind) {
     case SV::Kind::endpoint: return s.vertex_object[v.ids[0]];
@@ -52,6 +49,7 @@ std::size_t object_of(const scene::Scene& s, const SV& v) {
   return s.vertex_object[v.ids[0]];
 }
 
+namespace {
 std::vector<std::size_t> pair(std::size_t a, std::size_t b) {
   if (a == b) return {a};
   return a < b ? std::vector<std::size_t>{a, b} : std::vector<std::size_t>{b, a};

@@ -35,9 +35,46 @@ bool in_closed_triangle(const Classifier<K>& c, const symbolic::Symbolic_vertex&
   return false;  // no axis off the plane: the triangle is degenerate at t
 }
 
+template <class K>
+bool coplanar_triangles_meet(const Classifier<K>& c, std::size_t a, std::size_t b, const typename K::Time& t) {
+  using P = typename K::Poly;
+  using FT = typename K::FT;
+  using SP = symbolic::Symbolic_plane;
+  using SV = symbolic::Symbolic_vertex;
+  const K& k = c.kernel();
+  const auto& tri = c.motion().scene().triangles;
+  for (std::size_t i = 0; i < 3; ++i)
+    if (in_closed_triangle(c, SV::endpoint(tri[a][i]), b, t) || in_closed_triangle(c, SV::endpoint(tri[b][i]), a, t))
+      return true;
+  const Plane4<P>& plane = c.plane_poly(SP{SP::Kind::T, b});
+  for (int axis = 0; axis < 3; ++axis) {
+    Point4<P> w{{P(), P(), P(), P()}};
+    w[axis] = P(FT(1));
+    if (k.sign_at(dot(plane, w), t) == 0) continue;  // the axis is parallel to the plane
+    // Which side of the line through p and q a point of the plane is on.
+    const auto side = [&](const Point4<P>& p, const Point4<P>& q, const Point4<P>& x) {
+      return k.sign_at(dot(join(p, q, w), x), t);  // scene vertices have W > 0
+    };
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto& p = c.motion().vertex(tri[a][i]);
+      const auto& q = c.motion().vertex(tri[a][(i + 1) % 3]);
+      for (std::size_t j = 0; j < 3; ++j) {
+        const auto& r = c.motion().vertex(tri[b][j]);
+        const auto& u = c.motion().vertex(tri[b][(j + 1) % 3]);
+        const int r_side = side(p, q, r), u_side = side(p, q, u);
+        if (r_side == 0 && u_side == 0) continue;  // on one line: a corner is in the other, tested above
+        if (r_side * u_side <= 0 && side(r, u, p) * side(r, u, q) <= 0) return true;
+      }
+    }
+    return false;
+  }
+  return false;  // no axis off the plane: degenerate at t
+}
+
 #define KVD_INSTANTIATE_IN_CLOSED_TRIANGLE(K)                                                               \
   template bool in_closed_triangle<K>(const Classifier<K>&, const symbolic::Symbolic_vertex&, std::size_t, \
-                                      const K::Time&);
+                                      const K::Time&);                                    \
+  template bool coplanar_triangles_meet<K>(const Classifier<K>&, std::size_t, std::size_t, const K::Time&);
 KVD_FOR_EACH_KERNEL(KVD_INSTANTIATE_IN_CLOSED_TRIANGLE)
 
 }  // namespace kvd::predicates

@@ -41,6 +41,10 @@ struct Touch {
 Touch touch(const scene::Scene& s, const std::vector<symbolic::Symbolic_vertex>& vertices,
             const std::vector<symbolic::Symbolic_plane>& planes);
 
+// The object of the feature a vertex lies on: its own, the edge it is on, or
+// the triangle whose plane defines it.
+std::size_t object_of(const scene::Scene& s, const symbolic::Symbolic_vertex& v);
+
 // The objects that meet, increasing (one when an object meets itself).
 std::vector<std::size_t> contact_objects(const scene::Scene& s, const Touch& touch);
 // Those of a crossing found by a build.

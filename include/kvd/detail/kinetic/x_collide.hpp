@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "kvd/detail/kinetic/builder.hpp"
 #include "kvd/detail/kinetic/collision.hpp"
 #include "kvd/detail/kinetic/in_force.hpp"
+#include "kvd/geometry/plucker.hpp"
 #include "kvd/kernel/convert.hpp"
 #include "kvd/kinetic/simulation.hpp"
 #include "kvd/predicates/in_triangle.hpp"
@@ -27,28 +29,43 @@ public:
 
   // The contacts among the certificates `failing` at t: VT, ET or TT
   // certificates whose vertex lies in the triangle of another object at t
-  // (an object's own features lie in its faces' planes by construction).
-  // The contacts are named in certificate-key order.
+  // (an object's own features lie in its faces' planes by construction),
+  // and any certificate whose vertex lands at t in the plane of a vertical
+  // triangle of another object named by its plane, where the two objects
+  // meet in that plane (vertical_contact). The contacts are named in
+  // certificate-key order.
   std::optional<Meeting> contact(const predicates::Classifier<K>& c, const scene::Scene& s, const In_force<K>& in_force,
                                  const std::vector<std::size_t>& failing, const Time& t) const {
     Meeting m;
-    std::string features;
+    std::string features, flat;
+    std::map<std::pair<std::size_t, std::size_t>, bool> tested;
     // Named in key order: the queue's order among simultaneous failures is its own.
     std::vector<std::size_t> by_key = failing;
     std::ranges::sort(by_key, [&](std::size_t a, std::size_t b) { return in_force[a].key < in_force[b].key; });
     for (std::size_t id : by_key) {
       const auto& cert = in_force[id];
-      if (!may_collide(cert.key.type)) continue;
-      const Touch th = touch(s, cert.vertices, cert.planes);
-      const auto objects = contact_objects(s, th);
-      if (objects.size() < 2 || !predicates::in_closed_triangle(c, th.vertex, th.triangle, t)) continue;
+      std::string* named = &features;
+      std::vector<std::size_t> objects;
+      if (may_collide(cert.key.type)) {
+        const Touch th = touch(s, cert.vertices, cert.planes);
+        objects = contact_objects(s, th);
+        if (objects.size() < 2 || !predicates::in_closed_triangle(c, th.vertex, th.triangle, t)) objects.clear();
+      }
+      if (objects.empty()) {
+        objects = vertical_contact(c, s, cert.key, t, tested);
+        if (objects.empty()) continue;
+        named = &flat;
+      }
       m.objects.insert(m.objects.end(), objects.begin(), objects.end());
-      features += (features.empty() ? "" : ", ") + std::string(to_string(cert.key.type)) + " " + kinetic::features(cert.key);
+      *named += (named->empty() ? "" : ", ") + std::string(to_string(cert.key.type)) + " " + kinetic::features(cert.key);
     }
     if (m.objects.empty()) return std::nullopt;
     std::ranges::sort(m.objects);
     m.objects.erase(std::unique(m.objects.begin(), m.objects.end()), m.objects.end());
-    m.error = "a vertex or an edge reaches a triangle (" + features + ")";
+    if (!features.empty()) m.error = "a vertex or an edge reaches a triangle (" + features + ")";
+    if (!flat.empty())
+      m.error += std::string(m.error.empty() ? "" : "; ") +
+                 "a triangle lands in the plane of a vertical triangle and meets it (" + flat + ")";
     return m;
   }
 
@@ -97,6 +114,89 @@ public:
   }
 
 private:
+  // Case (iv) of proofs/collision_response.md. A failing certificate names
+  // a vertex v (on a feature of object A) against a plane that names a
+  // triangle (T), an edge (E) or a vertex (P). Of that feature's triangles,
+  // take each k of another object B that is vertical for good (its plane
+  // contains z at every t) and holds v in its plane at t. (The plane named
+  // is k's own when v lands flat: P(w) for a wall in y = const, E(e) for an
+  // edge of k, T(k); or another, as when v reaches a corner w of k.) It is
+  // a contact when v is a scene vertex lying in the closed triangle k, or
+  // when a triangle of A and a triangle of B both lie in k's plane at t and
+  // meet there
+  // (predicates::coplanar_triangles_meet: a pane may cross a wall with no
+  // corner inside it; and the certificate that fails may name another
+  // triangle of either object than the two that meet). Signs at t only.
+  // `tested` keeps the answer of the second test per (k, A) within a batch.
+  // The two objects, or none.
+  std::vector<std::size_t> vertical_contact(const predicates::Classifier<K>& c, const scene::Scene& s,
+                                            const Certificate_key& key, const Time& t,
+                                            std::map<std::pair<std::size_t, std::size_t>, bool>& tested) const {
+    using SP = symbolic::Symbolic_plane;
+    using SV = symbolic::Symbolic_vertex;
+    const auto* plane = std::get_if<SP>(&key.against);
+    if (!plane) return {};
+    const std::size_t a = object_of(s, key.vertex);
+    std::vector<std::size_t> named;  // the triangles of the plane's feature
+    const auto at_edge = [&](std::size_t e) {
+      named.insert(named.end(), s.edge_triangles[e].begin(), s.edge_triangles[e].end());
+    };
+    if (plane->kind == SP::Kind::T) named.push_back(plane->id);
+    else if (plane->kind == SP::Kind::E) at_edge(plane->id);
+    else
+      for (std::size_t e : s.vertex_edges[plane->id]) at_edge(e);
+    std::ranges::sort(named);
+    named.erase(std::unique(named.begin(), named.end()), named.end());
+    for (std::size_t tri : named) {
+      const std::size_t b = s.triangle_object[tri];
+      if (b == a) continue;  // an object's own features
+      const auto& in_plane = c.plane_poly(SP{SP::Kind::T, tri});
+      // Asked of the polynomial, which costs no sign at t (so a scene
+      // without vertical triangles evaluates nothing more).
+      if (!vanishes(dot(in_plane, c.motion().z()))) continue;  // not vertical for good
+      const Point4<typename K::Poly>& v = c.position(key.vertex);
+      if (k_.sign_at(v[3], t) == 0) return {};  // at infinity, or made by planes that coincide at t
+      if (k_.sign_at(dot(in_plane, v), t) != 0) continue;  // v not in it at t
+      bool meet = key.vertex.kind == SV::Kind::endpoint && predicates::in_closed_triangle(c, key.vertex, tri, t);
+      if (!meet) {
+        const auto [at, fresh] = tested.try_emplace({tri, a}, false);
+        if (fresh) at->second = meet_in_plane(c, s, a, tri, t);
+        meet = at->second;
+      }
+      if (meet) return {std::min(a, b), std::max(a, b)};
+    }
+    return {};
+  }
+
+  // Whether p is zero for every t: exactly in the exact kernel, each
+  // coefficient within epsilon in the others.
+  bool vanishes(const typename K::Poly& p) const {
+    return std::ranges::all_of(p.coefficients(), [&](const FT& x) { return k_.sign(x) == 0; });
+  }
+  // Whether a triangle of object `a` and one of the object of triangle `k`
+  // both lie in k's plane at t and meet there.
+  bool meet_in_plane(const predicates::Classifier<K>& c, const scene::Scene& s, std::size_t a, std::size_t k,
+                     const Time& t) const {
+    const auto& plane = c.plane_poly(symbolic::Symbolic_plane{symbolic::Symbolic_plane::Kind::T, k});
+    // An object's triangles are consecutive ids (file order).
+    const auto in_plane = [&](std::size_t object) {
+      const auto [first, last] = std::ranges::equal_range(s.triangle_object, object);
+      std::vector<std::size_t> out;
+      for (auto i = first; i != last; ++i) {
+        const std::size_t tri = static_cast<std::size_t>(i - s.triangle_object.begin());
+        const auto in = [&](std::size_t u) { return k_.sign_at(dot(plane, c.motion().vertex(u)), t) == 0; };
+        if (std::ranges::all_of(s.triangles[tri], in)) out.push_back(tri);
+      }
+      return out;
+    };
+    const std::vector<std::size_t> mine = in_plane(a);
+    if (mine.empty()) return false;
+    for (std::size_t theirs : in_plane(s.triangle_object[k]))
+      for (std::size_t own : mine)
+        if (predicates::coplanar_triangles_meet(c, own, theirs, t)) return true;
+    return false;
+  }
+
   // kinetic::reversal_time, moved past any root of a certificate in force
   // (so that the tree in force is valid at r with the old motions and,
   // positions being continuous, with the new ones); none when a
