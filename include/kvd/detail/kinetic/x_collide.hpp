@@ -180,7 +180,8 @@ private:
     const auto& plane = c.plane_poly(symbolic::Symbolic_plane{symbolic::Symbolic_plane::Kind::T, k});
     // An object's triangles are consecutive ids (file order).
     const auto in_plane = [&](std::size_t object) {
-      const auto [first, last] = std::ranges::equal_range(s.triangle_object, object);
+      // (std::equal_range: clang 14 cannot build libstdc++ 12's ranges version.)
+      const auto [first, last] = std::equal_range(s.triangle_object.begin(), s.triangle_object.end(), object);
       std::vector<std::size_t> out;
       for (auto i = first; i != last; ++i) {
         const std::size_t tri = static_cast<std::size_t>(i - s.triangle_object.begin());
