@@ -41,16 +41,11 @@ namespace {
 
 void write(const Cylindrical_bsp& b, std::size_t n, std::string& out) {
   const Bsp_node& node = b.nodes[n];
-  switch (node.kind) {
-    case Cut_kind::leaf: out += '.'; return;
-    case Cut_kind::vertex:
-      out += "(V s" + std::to_string(node.point.a / 2) + "." + std::to_string(node.point.a % 2);
-      break;
-    case Cut_kind::intersection:
-      out += "(I s" + std::to_string(node.point.a) + "xs" + std::to_string(node.point.b);
-      break;
-    case Cut_kind::edge: out += "(E s" + std::to_string(node.segment); break;
+  if (node.kind == Cut_kind::leaf) {
+    out += '.';
+    return;
   }
+  out += "(" + cut_name(node);
   for (const auto k : node.child) {
     out += ' ';
     write(b, static_cast<std::size_t>(k), out);
@@ -59,6 +54,16 @@ void write(const Cylindrical_bsp& b, std::size_t n, std::string& out) {
 }
 
 }  // namespace
+
+std::string cut_name(const Bsp_node& n) {
+  switch (n.kind) {
+    case Cut_kind::leaf: return ".";
+    case Cut_kind::vertex: return "V s" + std::to_string(n.point.a / 2) + "." + std::to_string(n.point.a % 2);
+    case Cut_kind::intersection: return "I s" + std::to_string(n.point.a) + "xs" + std::to_string(n.point.b);
+    case Cut_kind::edge: return "E s" + std::to_string(n.segment);
+  }
+  return ".";
+}
 
 std::string Cylindrical_bsp::text(std::size_t root) const {
   std::string out;

@@ -2,8 +2,6 @@
 
 #include <functional>
 
-#include "kvd/segments/segment_predicates.hpp"
-
 namespace kvd::view {
 
 std::vector<int> Tree_table::add(const tree::Kvd_tree& tree) {
@@ -27,10 +25,8 @@ int Tree_table::add(const segments::Cylindrical_bsp& tree) {
   std::vector<int> entry(tree.nodes.size(), -1);
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const segments::Bsp_node& n = tree.nodes[*it];
-    Entry e{".", "", -1, -1};
+    Entry e{segments::cut_name(n), "", -1, -1};
     if (n.kind != Cut_kind::leaf) {
-      e.cut = n.kind == Cut_kind::edge ? "E s" + std::to_string(n.segment)
-                                       : (n.kind == Cut_kind::vertex ? "V " : "I ") + segments::point_name(n.point);
       e.left = entry[segments::child(n, 0)];
       e.right = entry[segments::child(n, 1)];
     }

@@ -57,6 +57,11 @@ inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || 
 // The slot of a cut node's child `side` (0: left or below, 1: right or above).
 inline std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
 
+// A node's cut as the tree's text names it: "V s3.0" (a vertex cut through
+// endpoint 0 of segment 3), "I s1xs4" (an intersection cut), "E s2" (an edge
+// cut); "." for a leaf.
+std::string cut_name(const Bsp_node& n);
+
 // A cell's wall on `side` (0: left, 1: right).
 inline std::optional<Site_point>& wall(Cell& c, int side) { return side ? c.right : c.left; }
 inline const std::optional<Site_point>& wall(const Cell& c, int side) { return side ? c.right : c.left; }
