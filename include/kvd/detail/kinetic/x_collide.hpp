@@ -153,7 +153,7 @@ private:
       const auto& in_plane = c.plane_poly(SP{SP::Kind::T, tri});
       // Asked of the polynomial, which costs no sign at t (so a scene
       // without vertical triangles evaluates nothing more).
-      if (!vanishes(dot(in_plane, c.motion().z()))) continue;  // not vertical for good
+      if (!c.vanishes(dot(in_plane, c.motion().z()))) continue;  // not vertical for good
       const Point4<typename K::Poly>& v = c.position(key.vertex);
       if (k_.sign_at(v[3], t) == 0) return {};  // at infinity, or made by planes that coincide at t
       if (k_.sign_at(dot(in_plane, v), t) != 0) continue;  // v not in it at t
@@ -168,11 +168,6 @@ private:
     return {};
   }
 
-  // Whether p is zero for every t: exactly in the exact kernel, each
-  // coefficient within epsilon in the others.
-  bool vanishes(const typename K::Poly& p) const {
-    return std::ranges::all_of(p.coefficients(), [&](const FT& x) { return k_.sign(x) == 0; });
-  }
   // Whether a triangle of object `a` and one of the object of triangle `k`
   // both lie in k's plane at t and meet there.
   bool meet_in_plane(const predicates::Classifier<K>& c, const scene::Scene& s, std::size_t a, std::size_t k,
