@@ -6,11 +6,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <string>
 
 #include "kvd/segments/kinetic_segment_bsp.hpp"
 #include "kvd/segments/segment_io.hpp"
+#include "kvd/segments/segment_svg.hpp"
 #include "animation.hpp"
 #include "segment_page.hpp"
 
@@ -38,6 +40,18 @@ std::string text_of(const nlohmann::json& table, std::size_t k) {
   return "(" + e.at(0).get<std::string>() + " " + text_of(table, e.at(1)) + " " + text_of(table, e.at(2)) + ")";
 }
 
+// The endpoints' pixel positions the page draws interval i with (its
+// script's reading of "endpoints", "moving" and "moving_at").
+std::vector<double> page_endpoints(const nlohmann::json& data, std::size_t i) {
+  std::vector<double> e = data.at("endpoints").get<std::vector<double>>();
+  const auto& moving = data.at("moving");
+  const auto& at = data.at("intervals")[i].at("moving_at");
+  REQUIRE(at.size() == 2 * moving.size());
+  for (std::size_t k = 0; k < moving.size(); ++k)
+    for (std::size_t c = 0; c < 2; ++c) e.at(2 * moving[k].get<std::size_t>() + c) = at[2 * k + c];
+  return e;
+}
+
 // Checks the page's data of scene s against a run of its own.
 void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t max_events,
                 const std::optional<mpq_class>& until = std::nullopt) {
@@ -50,6 +64,14 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
   std::optional<mpq_class> limit = s.end;
   if (until && (!limit || *until < *limit)) limit = until;
   REQUIRE(intervals.size() == batches.size() + 1);
+  // The page's frame holds every interval's view box.
+  Segment_svg_options svg;
+  svg.size = data.at("width");
+  svg.notes = {""};  // the page's caption has one line of notes (the batch)
+  svg.box = view_box(s, mpq_class(intervals[0].at("instant").get<std::string>()));
+  for (const auto& v : intervals) svg.box = hull(*svg.box, view_box(s, mpq_class(v.at("instant").get<std::string>())));
+  std::vector<std::array<double, 2>> first;  // the endpoints' positions in the first interval
+  std::set<std::size_t> moved;               // the endpoints placed elsewhere in another
   std::size_t failures = 0;
   for (std::size_t i = 0; i < intervals.size(); ++i) {
     CAPTURE(s.name, i);
@@ -81,10 +103,22 @@ void check_page(const Segment_scene& s, const nlohmann::json& data, std::size_t 
     const std::string tree = text_of(data.at("subtrees"), intervals[i].at("root"));
     CHECK(tree == run.tree().text());
     CHECK(tree == build_cylindrical_bsp(pred, Exact_time(instant)).text());
+    // Each endpoint where segment_layout puts it at the instant.
+    const std::vector<double> drawn = page_endpoints(data, i);
+    const Segment_layout layout = segment_layout(s, run.tree(), instant, svg);
+    REQUIRE(drawn.size() == 2 * layout.endpoints.size());
+    for (std::size_t e = 0; e < layout.endpoints.size(); ++e) {
+      CHECK(drawn[2 * e] == layout.endpoints[e][0]);
+      CHECK(drawn[2 * e + 1] == layout.endpoints[e][1]);
+      if (i > 0 && layout.endpoints[e] != first.at(e)) moved.insert(e);
+    }
+    if (i == 0) first = layout.endpoints;
     std::set<std::size_t> marked;
     for (const std::size_t seg : intervals[i].at("marked")) CHECK(marked.insert(seg).second);
     CHECK(marked == named);
   }
+  // Only the endpoints that move are written again: a static one once.
+  CHECK(data.at("moving").get<std::set<std::size_t>>() == moved);
   CHECK(data.at("failures") == failures);
   // Where the page stopped: the run has no failure left, or its next batch
   // lies after the limit, or else the page has its events.

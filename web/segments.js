@@ -1,9 +1,10 @@
 // The kvd view page of a scene of moving segments: reads the
-// kvd-segment-view/2 data that `kvd view` inlines (src/view/segment_page.hpp):
+// kvd-segment-view/3 data that `kvd view` inlines (src/view/segment_page.hpp):
 // the trees of the run as one table of distinct subtrees; for each interval
 // of the run (before the first batch, then after each) its tree's root
-// there, which the page draws, and the pixel positions it is drawn with; and
-// the batches. Exact numbers stay strings.
+// there, which the page draws, and the pixel positions it is drawn with (of
+// the endpoints, only those that move: the others are given once); and the
+// batches. Exact numbers stay strings.
 (function () {
   'use strict';
   const data = JSON.parse(document.getElementById('kvd-data').textContent);
@@ -23,6 +24,15 @@
   el('summary').textContent = data.segments + ' segments, ' + data.batches.length + ' batches (' + data.failures +
       ' failures) from t = ' + data.start + ' to t ≈ ' + data.time_reached_approx + ', stopped: ' + data.stopped +
       '. Every tree shown equals a fresh build at its instant.';
+
+  // Every endpoint's pixel position in each interval, [x0, y0, x1, y1, ...]:
+  // the first interval's (data.endpoints), with the endpoints that move
+  // (data.moving) at their places in the interval (v.moving_at).
+  const endpoints = data.intervals.map((v) => {
+    const e = data.endpoints.slice();
+    data.moving.forEach((p, k) => [e[2 * p], e[2 * p + 1]] = [v.moving_at[2 * k], v.moving_at[2 * k + 1]]);
+    return e;
+  });
 
   // Subtree k of the table (data.subtrees: [cut, left, right], null for a
   // leaf) -> {label: 'V s3.0', kind: 'V', name: 's3.0', children: [L, R]};
@@ -53,8 +63,7 @@
   const line = (cls, x1, y1, x2, y2, more) =>
     '<line class="' + cls + '"' + (more || '') + ' x1="' + num(x1) + '" y1="' + num(y1) + '" x2="' + num(x2) +
     '" y2="' + num(y2) + '"/>';
-  function drawPicture(v, root) {
-    const e = v.endpoints;
+  function drawPicture(v, e, root) {
     const end = (i) => [e[2 * i], e[2 * i + 1]];
     const point = (name) => {
       const m = /^s(\d+)\.([01])$/.exec(name);
@@ -164,7 +173,7 @@
     items[i].classList.add('selected');
     const v = data.intervals[i];
     const root = subtree(v.root);
-    picture.innerHTML = data.style + drawPicture(v, root);
+    picture.innerHTML = data.style + drawPicture(v, endpoints[i], root);
     const batch = i > 0 ? data.batches[i - 1] : null;
     const info = el('event-info');
     info.replaceChildren();

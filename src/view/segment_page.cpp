@@ -1,6 +1,7 @@
 #include "segment_page.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <vector>
 
@@ -52,6 +53,28 @@ nlohmann::json subtrees(const Tree_table& table) {
   return out;
 }
 
+// The endpoints' pixel positions, `at[i][e]` in interval i: every one's in
+// the first interval ("endpoints": [x0, y0, x1, y1, ...]), the endpoints
+// placed elsewhere in some interval ("moving", once), and each interval's
+// positions of those ("moving_at": [x, y, ...] in that order). A static
+// segment's are written once: at 1,600 segments, half moving, they were
+// most of a 7.6 MiB page.
+void add_positions(const std::vector<std::vector<std::array<double, 2>>>& at, nlohmann::json& page) {
+  nlohmann::json first = nlohmann::json::array(), moving = nlohmann::json::array();
+  std::vector<std::size_t> moved;
+  for (std::size_t e = 0; e < at.front().size(); ++e) {
+    first.insert(first.end(), {at.front()[e][0], at.front()[e][1]});
+    if (std::ranges::any_of(at, [&](const auto& p) { return p[e] != at.front()[e]; })) moved.push_back(e);
+  }
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    nlohmann::json these = nlohmann::json::array();
+    for (const std::size_t e : moved) these.insert(these.end(), {at[i][e][0], at[i][e][1]});
+    page["intervals"][i]["moving_at"] = std::move(these);
+  }
+  page["endpoints"] = std::move(first);
+  page["moving"] = moved;
+}
+
 }  // namespace
 
 nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::string& title,
@@ -97,6 +120,7 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   const segments::Segment_predicates<Exact_kernel> pred(k, s);
   nlohmann::json shown = nlohmann::json::array();
   segments::Segment_layout layout;
+  std::vector<std::vector<std::array<double, 2>>> positions;  // the endpoints', each interval's
   // The intervals' trees share most subtrees (a batch changes a few nodes):
   // each is kept once (a page of 1,600 segments was 27 MiB with a text per
   // interval).
@@ -117,12 +141,12 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
     // picture written out here was some 200 bytes a cell (17 MiB for
     // random-100.json's 90 intervals).
     layout = segments::segment_layout(s, v.tree, v.instant, svg);
-    nlohmann::json endpoints = nlohmann::json::array(), crossings = nlohmann::json::object();
-    for (const auto& [x, y] : layout.endpoints) endpoints.insert(endpoints.end(), {x, y});
+    nlohmann::json crossings = nlohmann::json::object();
+    positions.push_back(layout.endpoints);
     for (const auto& [c, at] : layout.crossings) crossings[segments::point_name(c)] = at;
     const segments::Bsp_counts c = v.tree.counts();
     shown.push_back({{"instant", v.instant.get_str()}, {"root", table.add(v.tree)}, {"nodes", c.nodes}, {"height", c.height},
-                     {"caption", layout.caption}, {"endpoints", endpoints}, {"crossings", crossings},
+                     {"caption", layout.caption}, {"crossings", crossings},
                      {"marked", marked}});
     if (draw_progress) draw_progress(shown.size(), intervals.size());
   }
@@ -131,7 +155,7 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   // The time reached: the last batch's, or the limit when the page stopped
   // there or ran out of failures before it, as kvd simulate says.
   const Exact_time reached = stopped != "events" && limit ? Exact_time(*limit) : run.now();
-  return {{"format", "kvd-segment-view/2"},
+  nlohmann::json page = {{"format", "kvd-segment-view/3"},
           {"title", title},
           {"scene", s.name},
           {"segments", s.segments.size()},
@@ -147,6 +171,8 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
           {"batches", list},
           {"subtrees", subtrees(table)},
           {"intervals", shown}};
+  add_positions(positions, page);
+  return page;
 }
 
 }  // namespace kvd::view

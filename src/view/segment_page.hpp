@@ -1,12 +1,13 @@
 // The data of a kvd view page of a scene of moving segments (format
-// kvd-segment-view/2, read by web/segments.js): an exact run of
+// kvd-segment-view/3, read by web/segments.js): an exact run of
 // Kinetic_segment_bsp, its batches with each failing certificate's kind,
 // features and event, and for each interval of the run (before the first
 // batch, after each) the tree in force at a rational instant inside it (the
 // trees as one table of distinct subtrees, tree_table.hpp), with what the
 // page needs to draw it as kvd/segments/segment_svg.hpp
-// does (segment_layout: the pixel positions of the endpoints and of the
-// crossings cut through, the caption) and the segments a batch's failing
+// does (segment_layout: the pixel positions of the endpoints, a static
+// one's written once, and of the crossings cut
+// through, the caption) and the segments a batch's failing
 // certificates name, which it marks. Every interval's tree is
 // compared with a fresh build at its instant: a difference is a failed
 // validation, and no data is made.
