@@ -115,6 +115,8 @@ TEST_CASE("names, time, and priority are checked", "[segments][reject]") {
   const std::string two = "[" + seg + R"(, {"endpoints": [[1, 3], [3, -1]]}])";
   REJECTED_AT(doc(R"([{"name": "a", "endpoints": [[0, 0], [1, 1]]}, {"name": "a", "endpoints": [[2, 0], [3, 1]]}])"),
               "/segments/1/name", "used twice");
+  // "" is no name (SEGMENT_FORMAT.md), so two of them are no clash.
+  CHECK(rejection(doc(R"([{"name": "", "endpoints": [[0, 0], [1, 1]]}, {"name": "", "endpoints": [[2, 0], [3, 1]]}])")) == "");
   REJECTED_AT(doc(R"([{"name": 7, "endpoints": [[0, 0], [1, 1]]}])"), "/segments/0/name", "expected a string");
   REJECTED_AT(doc(two, R"("time": {"start": "1", "end": "1"}, )"), "/time", "less than");
   REJECTED_AT(doc(two, R"("time": {"start": "0", "stop": "1"}, )"), "/time/stop", "unknown key");
