@@ -40,7 +40,8 @@
 //
 // An update reads the sign of every certificate in force it decides again,
 // instead of computing it (Segment_predicates::held): the sign holds until
-// the certificate's failure, which is later than now.
+// the certificate's failure, which is later than now. The construction
+// likewise reads the sign of a key it already decided at another node.
 //
 // Floating-point kernels only: rounding can make a construction's signs
 // contradict each other (Bsp_contradiction). The run then builds the whole
