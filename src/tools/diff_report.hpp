@@ -73,11 +73,16 @@ void print_diff_json(const std::string& scene, const std::string& kernel, const 
       {"structure_mismatches", d.structure_mismatches},
       {"max_time_error", decimal(scientific(d.max_time_error))},
       {"max_relative_time_error", decimal(scientific(d.max_relative_time_error))},
+      {"inexact_stopped", stop_name(d.inexact_stopped)},
       {"seconds_exact", decimal(fixed(d.seconds_exact, 6))},
       {"seconds_inexact", decimal(fixed(d.seconds_inexact, 6))}};
   if (v.recovery) report["recovery"] = recovery_json(*v.recovery);
   std::cout << json_lines(report) << "\n";
 }
+
+// After "stuck": a floating-point run that stops there misses every exact
+// event after it (kvd simulate, on its own, exits 1).
+inline constexpr const char* stuck_note = " (it could not advance; the exact events after that are missed)";
 
 template <class F>
 void print_diff_text(const std::string& kernel, const Diff_view<F>& v) {
@@ -108,6 +113,7 @@ void print_diff_text(const std::string& kernel, const Diff_view<F>& v) {
             << "structure mismatches: " << d.structure_mismatches << "\n"
             << "max time error:       " << scientific(d.max_time_error) << " (relative "
             << scientific(d.max_relative_time_error) << ")\n"
+            << "stopped (" << kernel << "): " << stop_name(d.inexact_stopped) << (d.inexact_stopped == kinetic::Stop::stuck ? stuck_note : "") << "\n"
             << "seconds:              exact " << fixed(d.seconds_exact, 3) << ", " << kernel << " "
             << fixed(d.seconds_inexact, 3) << "\n";
   if (v.recovery) std::cout << "recovery (" << kernel << "): " << recovery_text(*v.recovery) << "\n";
