@@ -915,7 +915,7 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
   CHECK(run("diff " + scene + " --kernel double").out.find("event 0 side (edge) s0.1 s1 at 3: double event 0 at 3, error 0") !=
         std::string::npos);
   CHECK(r.out.find("\"inexact_stopped\": \"exhausted\"") != std::string::npos);
-  // A double run that cannot start (an epsilon that swamps the scene's
+  // A double run stuck at its start (an epsilon that swamps the scene's
   // numbers) misses every exact event, and the report says why: the diff
   // used to show only the missed events, with no word of the run stuck.
   const std::string random = std::string(KVD_SOURCE_DIR) + "/data/segments/random-100.json";
@@ -923,7 +923,7 @@ TEST_CASE("kvd diff compares a segment scene's exact run with a floating-point o
   CHECK(stuck.status == 0);  // divergence is a finding
   CHECK(stuck.out.find("\"missed_events\": 10,") != std::string::npos);
   CHECK(stuck.out.find("\"inexact_stopped\": \"stuck\"") != std::string::npos);
-  CHECK(run("diff " + random + " --kernel double --epsilon 1 --events 10").out.find("stopped (double): stuck (") !=
+  CHECK(run("diff " + random + " --kernel double --epsilon 1 --events 10").out.find("stopped:              double run stuck (") !=
         std::string::npos);
   const Run kernel = run("diff " + scene + " --kernel bogus", "2>&1");
   CHECK(kernel.status == 2);

@@ -3,6 +3,9 @@
 // a fresh build on random moving scenes.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <map>
+
 #include "kernels.hpp"
 #include "segment_scenes.hpp"
 #include "kvd/kernel/convert.hpp"
@@ -414,4 +417,56 @@ TEST_CASE("a double run whose epsilon swamps the scene is stuck at its start", "
   CHECK_THROWS_AS(build_cylindrical_bsp(pred, k.time(0.0)), Bsp_contradiction);
   // The exact run of the same scene has its tree.
   CHECK(Kinetic_segment_bsp<Exact_kernel>(Exact_kernel(), s, false).tree().text() == "(V s0.0 . (V s0.1 (E s0 . .) .))");
+}
+
+// The construction reads the sign of a key it decided already (rule held on
+// the certificates recorded so far) instead of deciding it again: its
+// certificates are those a plain build records, deciding every sign, with
+// the same nodes, signs and polynomials (each the first decision's).
+TEMPLATE_TEST_CASE("the construction's certificates are those of a build that decides every sign", "[segments][kinetic]",
+                   KVD_ALL_KERNELS) {
+  using P = typename TestType::Poly;
+  struct Recorded {
+    std::vector<P> polys;
+    int sign = 0;
+    std::vector<std::int32_t> nodes;
+  };
+  for (const auto& [family, seed] : {std::pair{Segment_family::random, 1}, {Segment_family::random, 2},
+                                     {Segment_family::degenerate, 1}, {Segment_family::rotating, 1}}) {
+    const Segment_scene s = kvd::test::generated(family, 12, static_cast<std::uint64_t>(seed), 6);
+    CAPTURE(s.name);
+    const TestType k;
+    const Kinetic_segment_bsp<TestType> kin(k, s, false);
+    REQUIRE_FALSE(kin.stuck());
+    const Segment_predicates<TestType> pred(k, s);
+    std::map<Segment_certificate_key, Recorded> plain;
+    std::size_t decided = 0;
+    pred.record([&](const Segment_certificate_key& key, std::vector<P>&& polys, std::int32_t node, int sign) {
+      ++decided;
+      auto [at, fresh] = plain.try_emplace(key);
+      if (fresh) at->second = {std::move(polys), sign, {}};
+      CHECK(at->second.sign == sign);  // a key has one sign at one instant
+      at->second.nodes.push_back(node);
+    });
+    const Cylindrical_bsp bsp = build_cylindrical_bsp(pred, kin.now());
+    REQUIRE(bsp.text() == kin.tree().text());
+    CHECK(decided > plain.size());  // keys asked again, which the construction reads
+    // The plain build's nodes in pre-order, as certificate_list numbers them.
+    const std::vector<std::size_t> order = bsp.preorder();
+    std::vector<std::int32_t> id(bsp.nodes.size(), -1);
+    for (std::size_t i = 0; i < order.size(); ++i) id[order[i]] = static_cast<std::int32_t>(i);
+    const auto list = kin.certificate_list();
+    REQUIRE(list.size() == plain.size());
+    for (const auto& [key, nodes] : list) {
+      const auto at = plain.find(key);
+      REQUIRE(at != plain.end());
+      std::vector<std::int32_t> expected;
+      for (const std::int32_t n : at->second.nodes) expected.push_back(n < 0 ? -1 : id[static_cast<std::size_t>(n)]);
+      std::sort(expected.begin(), expected.end());
+      expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+      CHECK(nodes == expected);
+      CHECK(kin.sign(key) == at->second.sign);
+      CHECK(kin.polynomials(key) == at->second.polys);
+    }
+  }
 }

@@ -351,7 +351,8 @@
     el('diff-kernel').textContent = d.kernel;
     el('diff-summary').textContent = d.missed_events + ' missed, ' + d.spurious_events + ' spurious, ' +
       d.order_mismatches + ' out of order, ' + d.structure_mismatches + ' followed by another tree; first divergence: ' +
-      (d.first_divergence_event === null ? 'none' : 'event ' + d.first_divergence_event);
+      (d.first_divergence_event === null ? 'none' : 'event ' + d.first_divergence_event) +
+      (d.inexact_stopped === 'stuck' ? '; the ' + d.kernel + ' run got stuck and missed every event after that' : '');
     // Exact event i lies in the batch holding the i-th failure.
     const batchOf = [];
     data.batches.forEach((b, k) => b.failing.forEach(() => batchOf.push(k)));

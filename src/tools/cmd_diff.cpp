@@ -55,12 +55,14 @@ const char* const diff_help =
     "first_divergence_event is the first exact event (from 0) that is missed,\n"
     "out of order, followed by another tree, or preceded by a spurious event;\n"
     "events_compared when the runs differ only after the last exact event.\n"
-    "inexact_stopped says why the floating-point run ended: stuck when it could\n"
-    "not advance (kvd simulate exits 1 there), and every exact event after that\n"
-    "is missed.\n"
-    "Divergence is a finding: exit status 0; 1 when the floating-point run\n"
-    "cannot start (its rounding makes triangles cross that the exact kernel\n"
-    "keeps apart), 2 on bad input.\n";
+    "inexact_stopped says why the floating-point run ended: limit when it reached\n"
+    "the exact run's last batch (where --events stopped that) or the scene's end;\n"
+    "exhausted when no certificate was left to fail; events at its own cap of\n"
+    "2N + 100 failures; stuck when it could not advance (kvd simulate exits 1\n"
+    "there), every exact event after that then missed.\n"
+    "Divergence is a finding, a stuck run included: exit status 0; 1 when the\n"
+    "floating-point run cannot start because its rounding makes triangles cross\n"
+    "that the exact kernel keeps apart; 2 on bad input.\n";
 
 Diff_view<kinetic::Failure> view(const kinetic::Differential& d, const kinetic::Simulation<Exact_time>& exact) {
   return {d,

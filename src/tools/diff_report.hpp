@@ -113,7 +113,8 @@ void print_diff_text(const std::string& kernel, const Diff_view<F>& v) {
             << "structure mismatches: " << d.structure_mismatches << "\n"
             << "max time error:       " << scientific(d.max_time_error) << " (relative "
             << scientific(d.max_relative_time_error) << ")\n"
-            << "stopped (" << kernel << "): " << stop_name(d.inexact_stopped) << (d.inexact_stopped == kinetic::Stop::stuck ? stuck_note : "") << "\n"
+            << "stopped:              " << kernel << " run " << stop_name(d.inexact_stopped)
+            << (d.inexact_stopped == kinetic::Stop::stuck ? stuck_note : "") << "\n"
             << "seconds:              exact " << fixed(d.seconds_exact, 3) << ", " << kernel << " "
             << fixed(d.seconds_inexact, 3) << "\n";
   if (v.recovery) std::cout << "recovery (" << kernel << "): " << recovery_text(*v.recovery) << "\n";

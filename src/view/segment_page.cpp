@@ -156,21 +156,21 @@ nlohmann::json segment_page_data(const segments::Segment_scene& s, const std::st
   // there or ran out of failures before it, as kvd simulate says.
   const Exact_time reached = stopped != "events" && limit ? Exact_time(*limit) : run.now();
   nlohmann::json page = {{"format", "kvd-segment-view/3"},
-          {"title", title},
-          {"scene", s.name},
-          {"segments", s.segments.size()},
-          {"start", s.start.get_str()},
-          {"failures", failures},
-          {"stopped", stopped},
-          {"time_reached", k.to_string(reached)},
-          {"time_reached_approx", approx(k.to_double(reached))},
-          {"width", layout.width},
-          {"height", layout.height},
-          {"frame", {layout.left, layout.top, layout.box_width, layout.box_height}},
-          {"style", segments::segment_svg_style()},
-          {"batches", list},
-          {"subtrees", subtrees(table)},
-          {"intervals", shown}};
+                         {"title", title},
+                         {"scene", s.name},
+                         {"segments", s.segments.size()},
+                         {"start", s.start.get_str()},
+                         {"failures", failures},
+                         {"stopped", stopped},
+                         {"time_reached", k.to_string(reached)},
+                         {"time_reached_approx", approx(k.to_double(reached))},
+                         {"width", layout.width},
+                         {"height", layout.height},
+                         {"frame", {layout.left, layout.top, layout.box_width, layout.box_height}},
+                         {"style", segments::segment_svg_style()},
+                         {"batches", list},
+                         {"subtrees", subtrees(table)},
+                         {"intervals", shown}};
   add_positions(positions, page);
   return page;
 }

@@ -216,7 +216,9 @@ public:
   void at_node(std::int32_t n) const { node_ = n; }
   // While set, a key it gives a sign for is decided by that sign, reported
   // to the recorder with no polynomial (the caller holds them). Only for the
-  // certificates in force: their sign holds until their failure time.
+  // certificates in force, whose sign holds until their failure time, and
+  // for a key already decided at the same instant in a construction under
+  // way.
   using Held = std::function<std::optional<int>(const Segment_certificate_key&)>;
   void held(Held h) const { held_ = std::move(h); }
   // While set, the signs decided at instant `t` (that very object: the
