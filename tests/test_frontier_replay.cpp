@@ -161,3 +161,35 @@ TEST_CASE("changes of several segments under one node are decided again down to 
     }
   CHECK(tally.batches > 500);
 }
+
+// A failing node whose key two segments decide: the x order of its point cut
+// with its cell's wall, which every walk cut above by that wall compares
+// with the cut. Every segment deciding a failing key there sets the
+// frontier, and the cut's own segment puts the node on it (proofs/
+// segment-local-update.md, "Several segments at one instant"). In seed 4
+// of the small-integer scenes at t = 1/3 (order s0 s3 s1 s5 s2 s4 s6), s4.1
+// passes the root's abscissa s0.0 while s2.0, a cut below the root, passes
+// its cell's wall s1.1: s2's and s4's parts ending at that wall both decide
+// their x order there. The update gave up there and replayed the root's
+// subtree, the whole tree; it makes one frontier replay at s2's frontier.
+// At 12,800 segments the same gave batches that made 328,470 nodes again.
+TEST_CASE("a failing node whose key two segments decide falls to the earlier one's frontier", "[segments][kinetic]") {
+  const auto s = kvd::test::small_integer_scene(4);
+  REQUIRE(s);
+  const Exact_kernel k;
+  Kinetic_segment_bsp<Exact_kernel> local(k, *s, false, Segment_update::local);
+  const Exact_time third(mpq_class(1, 3));
+  local.advance_to(Exact_time(mpq_class(33, 100)));
+  REQUIRE(k.compare(*local.next_event_time(), third) == 0);
+  const auto b = local.advance();
+  std::vector<std::string> failing;
+  for (const auto& key : b.failing) failing.push_back(std::string(kind_name(key.kind)) + " " + features(key));
+  CHECK(failing == std::vector<std::string>{"x_order s0.0 s4.1", "x_order s1.1 s2.0"});
+  CHECK(b.frontier_replays == 1);
+  CHECK(b.subtree_replays == 0);
+  const Kinetic_segment_bsp<Exact_kernel> fresh(k, *s, false, Segment_update::subtree, third);
+  CHECK(local.tree().text() == fresh.tree().text());
+  CHECK(cells(local.tree()) == cells(fresh.tree()));
+  CHECK(difference(local.certificate_list(), fresh.certificate_list()) == "");
+  CHECK(local.arrivals() == fresh.arrivals());
+}

@@ -42,33 +42,30 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
                                                                                 const std::vector<std::int32_t>& nodes) {
   const auto& rank = scene_.rank;
   const auto node = [&](std::size_t n) -> const Bsp_node& { return tree_.nodes[n]; };
-  // The segment whose steps decided the failing keys at n, when there is
-  // one (with exact logs every failing key at n has a logged step deciding
-  // it; one without is taken as a reason to replay u's subtree).
-  const auto changing = [&](std::size_t n) -> std::optional<std::uint32_t> {
+  // The segments whose steps decided the failing keys at n, sorted (with
+  // exact logs every failing key at n has a logged step deciding it; one
+  // without is taken as a reason to replay u's subtree).
+  const auto changing = [&](std::size_t n) -> std::optional<std::vector<std::uint32_t>> {
     std::set<Key> failing_here, seen;
     for (const auto& [key, at] : failing)
       if (std::find(at.begin(), at.end(), static_cast<std::int32_t>(n)) != at.end()) failing_here.insert(key);
-    std::optional<std::uint32_t> segment;
+    std::set<std::uint32_t> segments;
     std::vector<Key> keys;
     for (const Arrival& a : log_.at[n]) {
       keys.clear();
       decided_keys(node(n), a, keys);
-      bool uses = false;
       for (const Key& k : keys)
         if (failing_here.count(k)) {
           seen.insert(k);
-          uses = true;
+          segments.insert(a.segment);
         }
-      if (!uses) continue;
-      if (segment && *segment != a.segment) return std::nullopt;
-      segment = a.segment;
     }
-    if (seen.size() != failing_here.size()) return std::nullopt;
-    return segment;
+    if (segments.empty() || seen.size() != failing_here.size()) return std::nullopt;
+    return std::vector<std::uint32_t>(segments.begin(), segments.end());
   };
-  const std::optional<std::uint32_t> segment = changing(u);
-  if (!segment) return std::nullopt;
+  const std::optional<std::vector<std::uint32_t>> at_u = changing(u);
+  if (!at_u || at_u->size() > 1) return std::nullopt;
+  const std::uint32_t segment = at_u->front();
   // The segments whose steps changed above the frontier, by rank, with the
   // nodes their steps are decided again from: u's segment from u, another
   // (a failure of its own at the same instant, in the crown) from its
@@ -76,7 +73,7 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
   // crown's cuts are older than every one of them, so each one's steps
   // there are decided against cuts that stay, and all are decided again
   // before any frontier node is replayed from its log.
-  std::map<std::size_t, std::vector<std::size_t>> starts{{rank[*segment], {u}}};
+  std::map<std::size_t, std::vector<std::size_t>> starts{{rank[segment], {u}}};
   std::size_t r = 0;
   bool several = false;
   const auto frontier = [&](std::size_t n) { return cut_rank(node(n), rank) >= r; };
@@ -87,9 +84,14 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     if (cut_rank(node(u), rank) >= r) return std::nullopt;  // u is the frontier: its replay is all there is
     replayed.clear();
     std::map<std::size_t, std::vector<std::size_t>> crown;  // the failing crown nodes of each other segment
+    bool shared = false;  // a failing crown node whose keys two segments decide
     // A failing node below u above the frontier must be one segment's
     // alone: its steps are decided again there. Below, the frontier node
-    // above it is replayed.
+    // above it is replayed. Every segment deciding a failing key there sets
+    // the frontier first: two decide one where their walks' parts end at a
+    // wall of the node's cell and the key is the wall's x order with the
+    // node's cut, and the cut's own segment, one of them, puts the node on
+    // the frontier.
     for (const std::int32_t f : nodes) {
       std::size_t top = static_cast<std::size_t>(f);
       bool under = false;
@@ -105,19 +107,22 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
         replayed.insert(top);
         continue;
       }
-      const std::optional<std::uint32_t> other = changing(top);
-      if (!other) return std::nullopt;
-      if (*other == *segment) continue;
-      // A segment earlier than the frontier's lowers it: the pass is made again.
-      if (starts.emplace(rank[*other], std::vector<std::size_t>{}).second && rank[*other] < r) grew = true;
-      crown[rank[*other]].push_back(top);
+      const std::optional<std::vector<std::uint32_t>> others = changing(top);
+      if (!others) return std::nullopt;
+      shared = shared || others->size() > 1;
+      for (const std::uint32_t other : *others) {
+        // A segment earlier than the frontier's lowers it: the pass is made again.
+        if (starts.emplace(rank[other], std::vector<std::size_t>{}).second && rank[other] < r) grew = true;
+        if (other != segment) crown[rank[other]].push_back(top);
+      }
     }
     if (grew) continue;
+    if (shared) return std::nullopt;
     // A segment whose failing nodes all fell below the frontier as it rose
     // (its own cuts) has its changes made by the frontier nodes' replays
     // alone; if it is the earliest, it still set the frontier.
     several = starts.size() > 1;
-    std::erase_if(starts, [&](const auto& e) { return e.first != rank[*segment] && !crown.count(e.first); });
+    std::erase_if(starts, [&](const auto& e) { return e.first != rank[segment] && !crown.count(e.first); });
     for (auto& [ro, at] : crown) {
       const std::set<std::size_t> failing_here(at.begin(), at.end());
       for (const std::size_t n : at) {

@@ -21,10 +21,11 @@
 // segments: the leaves of B_{s-1} under u), and only the frontier nodes whose
 // arrivals changed are made again, keeping the old subtrees below s's cuts
 // whose arrivals did not change (Subtree_fit::remake). Failing nodes of
-// other segments below u, each node one segment's (events of several
-// segments at one instant), have their segments' steps decided again from
-// them too, down to the frontier of the earliest segment, whose nodes are
-// then made again with that segment's cuts first (Replay_root::several).
+// other segments below u (events of several segments at one instant) have
+// their segments' steps decided again from them too, down to the frontier
+// of the earliest segment deciding a failing key above it, whose nodes are
+// then made again with that segment's cuts first (Replay_root::several); a
+// node left above that frontier must be one segment's.
 // Otherwise it replays u's subtree. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
