@@ -64,7 +64,22 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     return std::vector<std::uint32_t>(segments.begin(), segments.end());
   };
   const std::optional<std::vector<std::uint32_t>> at_u = changing(u);
-  if (!at_u || at_u->size() > 1) return std::nullopt;
+  if (!at_u) return std::nullopt;
+  // u on the frontier of rank rf (a leaf of B_{rf-1}: its cut's segment
+  // decides a failing key at it, say): it is made again as a frontier node
+  // is, from its log, which no failing sign above it changed, keeping the
+  // old subtrees below its cuts whose arrivals did not change. Below the
+  // frontier, u's subtree is replayed.
+  const auto remade = [&](std::size_t rf) -> std::optional<std::vector<Replay_root>> {
+    const std::int32_t p = node(u).parent;
+    if (p >= 0 && cut_rank(node(static_cast<std::size_t>(p)), rank) >= rf) return std::nullopt;
+    return std::vector<Replay_root>{{u, rf}};
+  };
+  if (at_u->size() > 1) {
+    std::size_t earliest = rank[at_u->front()];
+    for (const std::uint32_t x : *at_u) earliest = std::min(earliest, rank[x]);
+    return cut_rank(node(u), rank) >= earliest ? remade(earliest) : std::nullopt;
+  }
   const std::uint32_t segment = at_u->front();
   // The segments whose steps changed above the frontier, by rank, with the
   // nodes their steps are decided again from: u's segment from u, another
@@ -81,7 +96,7 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
   for (bool grew = true; grew;) {
     grew = false;
     r = starts.begin()->first;
-    if (cut_rank(node(u), rank) >= r) return std::nullopt;  // u is the frontier: its replay is all there is
+    if (cut_rank(node(u), rank) >= r) return remade(r);
     replayed.clear();
     std::map<std::size_t, std::vector<std::size_t>> crown;  // the failing crown nodes of each other segment
     bool shared = false;  // a failing crown node whose keys two segments decide

@@ -25,8 +25,9 @@
 // their segments' steps decided again from them too, down to the frontier
 // of the earliest segment deciding a failing key above it, whose nodes are
 // then made again with that segment's cuts first (Replay_root::several); a
-// node left above that frontier must be one segment's.
-// Otherwise it replays u's subtree. A flip is
+// node left above that frontier must be one segment's. A u on the frontier
+// of the earliest segment deciding a failing key at it is made again as a
+// frontier node is. Otherwise it replays u's subtree. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
 // cells of the segment's own cuts, and the update is the paper's (section
