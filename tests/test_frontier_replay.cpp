@@ -99,6 +99,33 @@ Segment_scene with_motion(Segment_family family, std::size_t n, std::uint64_t se
   return generate_segments(o);
 }
 
+// The batch at t of small-integer scene `seed` on the local update (the run
+// taken first to `before`, just earlier): its failing keys by name and its
+// replays. Checks that the tree, cells, certificates and logs after it are
+// a fresh construction's at t.
+struct Local_batch {
+  std::vector<std::string> failing;
+  std::size_t frontier = 0, subtree = 0;
+};
+
+Local_batch local_batch_at(std::uint64_t seed, const mpq_class& before, const mpq_class& t) {
+  const auto s = kvd::test::small_integer_scene(seed);
+  REQUIRE(s);
+  const Exact_kernel k;
+  Kinetic_segment_bsp<Exact_kernel> local(k, *s, false, Segment_update::local);
+  local.advance_to(Exact_time(before));
+  REQUIRE(k.compare(*local.next_event_time(), Exact_time(t)) == 0);
+  const auto b = local.advance();
+  Local_batch out{{}, b.frontier_replays, b.subtree_replays};
+  for (const auto& key : b.failing) out.failing.push_back(std::string(kind_name(key.kind)) + " " + features(key));
+  const Kinetic_segment_bsp<Exact_kernel> fresh(k, *s, false, Segment_update::subtree, Exact_time(t));
+  CHECK(local.tree().text() == fresh.tree().text());
+  CHECK(cells(local.tree()) == cells(fresh.tree()));
+  CHECK(difference(local.certificate_list(), fresh.certificate_list()) == "");
+  CHECK(local.arrivals() == fresh.arrivals());
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("the frontier replay makes the subtree replay's trees and certificates", "[segments][kinetic]") {
@@ -129,26 +156,12 @@ TEST_CASE("the frontier replay makes the subtree replay's trees and certificates
 // frontier, where the whole subtree of s1.1's cut was replayed before.
 TEST_CASE("changes of several segments under one node are decided again down to the earliest one's frontier",
           "[segments][kinetic]") {
-  const auto s = kvd::test::small_integer_scene(188);
-  REQUIRE(s);
-  const Exact_kernel k;
-  Kinetic_segment_bsp<Exact_kernel> local(k, *s, false, Segment_update::local);
-  const Exact_time half(mpq_class(1, 2));
-  local.advance_to(Exact_time(mpq_class(49, 100)));
-  REQUIRE(k.compare(*local.next_event_time(), half) == 0);
-  const auto b = local.advance();
-  std::vector<std::string> failing;
-  for (const auto& key : b.failing) failing.push_back(std::string(kind_name(key.kind)) + " " + features(key));
-  CHECK(failing == std::vector<std::string>{"x_order s0.1 s5.0", "x_order s0.1 s3xs5", "x_order s1.1 s3.0",
-                                            "x_order s3.1 s5.0", "side s3.1 s5", "side s4.0 s2",
-                                            "order_at s0.1 s5 s3"});
-  CHECK(b.frontier_replays == 1);
-  CHECK(b.subtree_replays == 0);
-  const Kinetic_segment_bsp<Exact_kernel> fresh(k, *s, false, Segment_update::subtree, half);
-  CHECK(local.tree().text() == fresh.tree().text());
-  CHECK(cells(local.tree()) == cells(fresh.tree()));
-  CHECK(difference(local.certificate_list(), fresh.certificate_list()) == "");
-  CHECK(local.arrivals() == fresh.arrivals());
+  const Local_batch b = local_batch_at(188, mpq_class(49, 100), mpq_class(1, 2));
+  CHECK(b.failing == std::vector<std::string>{"x_order s0.1 s5.0", "x_order s0.1 s3xs5", "x_order s1.1 s3.0",
+                                              "x_order s3.1 s5.0", "side s3.1 s5", "side s4.0 s2",
+                                              "order_at s0.1 s5 s3"});
+  CHECK(b.frontier == 1);
+  CHECK(b.subtree == 0);
 
   // The same, side by side with the subtree replay and a fresh construction
   // after every batch, over whole spans of the first hundred seeds, where
@@ -174,24 +187,10 @@ TEST_CASE("changes of several segments under one node are decided again down to 
 // subtree, the whole tree; it makes one frontier replay at s2's frontier.
 // At 12,800 segments the same gave batches that made 328,470 nodes again.
 TEST_CASE("a failing node whose key two segments decide falls to the earlier one's frontier", "[segments][kinetic]") {
-  const auto s = kvd::test::small_integer_scene(4);
-  REQUIRE(s);
-  const Exact_kernel k;
-  Kinetic_segment_bsp<Exact_kernel> local(k, *s, false, Segment_update::local);
-  const Exact_time third(mpq_class(1, 3));
-  local.advance_to(Exact_time(mpq_class(33, 100)));
-  REQUIRE(k.compare(*local.next_event_time(), third) == 0);
-  const auto b = local.advance();
-  std::vector<std::string> failing;
-  for (const auto& key : b.failing) failing.push_back(std::string(kind_name(key.kind)) + " " + features(key));
-  CHECK(failing == std::vector<std::string>{"x_order s0.0 s4.1", "x_order s1.1 s2.0"});
-  CHECK(b.frontier_replays == 1);
-  CHECK(b.subtree_replays == 0);
-  const Kinetic_segment_bsp<Exact_kernel> fresh(k, *s, false, Segment_update::subtree, third);
-  CHECK(local.tree().text() == fresh.tree().text());
-  CHECK(cells(local.tree()) == cells(fresh.tree()));
-  CHECK(difference(local.certificate_list(), fresh.certificate_list()) == "");
-  CHECK(local.arrivals() == fresh.arrivals());
+  const Local_batch b = local_batch_at(4, mpq_class(33, 100), mpq_class(1, 3));
+  CHECK(b.failing == std::vector<std::string>{"x_order s0.0 s4.1", "x_order s1.1 s2.0"});
+  CHECK(b.frontier == 1);
+  CHECK(b.subtree == 0);
 }
 
 // A topmost failing node that is itself on the frontier (a leaf of the tree
@@ -202,23 +201,9 @@ TEST_CASE("a failing node whose key two segments decide falls to the earlier one
 // below them, so they are not a lone flip's (flip_frontiers), and they are
 // s2's first cuts on their paths.
 TEST_CASE("a topmost failing node on the frontier is made again as a frontier node", "[segments][kinetic]") {
-  const auto s = kvd::test::small_integer_scene(6);
-  REQUIRE(s);
-  const Exact_kernel k;
-  Kinetic_segment_bsp<Exact_kernel> local(k, *s, false, Segment_update::local);
-  const Exact_time t(mpq_class(3, 2));
-  local.advance_to(Exact_time(mpq_class(149, 100)));
-  REQUIRE(k.compare(*local.next_event_time(), t) == 0);
-  const auto b = local.advance();
-  std::vector<std::string> failing;
-  for (const auto& key : b.failing) failing.push_back(std::string(kind_name(key.kind)) + " " + features(key));
-  CHECK(failing == std::vector<std::string>{"x_order s2.0 s2.1", "x_order s2.0 s2xs4", "x_order s2.1 s2xs4",
-                                            "side s0.0 s3"});
-  CHECK(b.frontier_replays == 2);
-  CHECK(b.subtree_replays == 0);
-  const Kinetic_segment_bsp<Exact_kernel> fresh(k, *s, false, Segment_update::subtree, t);
-  CHECK(local.tree().text() == fresh.tree().text());
-  CHECK(cells(local.tree()) == cells(fresh.tree()));
-  CHECK(difference(local.certificate_list(), fresh.certificate_list()) == "");
-  CHECK(local.arrivals() == fresh.arrivals());
+  const Local_batch b = local_batch_at(6, mpq_class(149, 100), mpq_class(3, 2));
+  CHECK(b.failing == std::vector<std::string>{"x_order s2.0 s2.1", "x_order s2.0 s2xs4", "x_order s2.1 s2xs4",
+                                              "side s0.0 s3"});
+  CHECK(b.frontier == 2);
+  CHECK(b.subtree == 0);
 }
