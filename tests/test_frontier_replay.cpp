@@ -207,3 +207,40 @@ TEST_CASE("a topmost failing node on the frontier is made again as a frontier no
   CHECK(b.frontier == 2);
   CHECK(b.subtree == 0);
 }
+
+// Several segments deciding the failing keys of one node above the
+// frontier, each not the node's own cut's: their steps are all decided
+// again from it, down to the frontier of the earliest (proofs/
+// segment-local-update.md, "Several segments at one instant"). In seed 45
+// of the small-integer scenes at t = 1/2 (order s3 s5 s4 s0 s1 s6 s2), s6.0
+// reaches the root's abscissa s3.0 while s6.1 and s2.0 both reach that of
+// s5.0, a cut below the root: s6's and s2's steps decide the failing keys
+// at s5.0's cut. The update replayed the root's subtree, the whole tree; it
+// makes one frontier replay at s6's frontier.
+TEST_CASE("a failing node whose keys two later segments decide is rerouted from for both", "[segments][kinetic]") {
+  const Local_batch b = local_batch_at(45, mpq_class(49, 100), mpq_class(1, 2));
+  CHECK(b.failing == std::vector<std::string>{"x_order s2.0 s5.0", "x_order s3.0 s6.0", "x_order s5.0 s6.1"});
+  CHECK(b.frontier == 1);
+  CHECK(b.subtree == 0);
+}
+
+// The same at the topmost failing node itself, with a crossing that goes at
+// that instant between two of the rerouted segments. In seed 220 at t = 2
+// (order s0 s1 s6 s2 s3 s5 s4), s1.0, s5.1, s6.0 and the crossing of s5 and
+// s6 all reach the root's abscissa s0.0, where s6.0 meets s5's line: s1's,
+// s5's and s6's steps decide the root's failing keys, and s5 and s6 no
+// longer cross after. Their steps are decided again from the root down to
+// s1's frontier. The reroutes locate the crossing as logged, since neither
+// segment's cuts lie above that frontier; a cell of a frontier node's remake
+// then got its location without s5's crossing walk, and cut it twice ("a
+// point is cut twice in one region") until the fit dropped such arrivals as
+// the frontier nodes' logs do (drop_unwalked_crossings).
+TEST_CASE("several segments at the topmost failing node are rerouted from it", "[segments][kinetic]") {
+  const Local_batch b = local_batch_at(220, mpq_class(19, 10), mpq_class(2));
+  CHECK(b.failing == std::vector<std::string>{"x_order s0.0 s1.0", "x_order s0.0 s5.1", "x_order s0.0 s6.0",
+                                              "x_order s0.0 s5xs6", "x_order s1.0 s5.1", "x_order s1.0 s6.0",
+                                              "x_order s1.0 s5xs6", "x_order s1.1 s6.1", "x_order s6.0 s5xs6",
+                                              "side s6.0 s5"});
+  CHECK(b.frontier == 1);
+  CHECK(b.subtree == 0);
+}

@@ -3,10 +3,11 @@
 // "Frontier replay"): when the signs that changed at the topmost node u are
 // those of one segment's steps, only those steps are decided again below u,
 // down to the leaves of the tree before that segment, and only the subtrees
-// there whose arrivals changed are replayed (with failing nodes of other
-// segments below u, each one's steps from its own, down to the leaves of
-// the tree before the earliest of them: "Several segments at one instant");
-// and the frontier nodes of a flip (flip_frontiers).
+// there whose arrivals changed are replayed (with several segments at u or
+// at failing nodes below it, each one's steps from the topmost of them,
+// down to the leaves of the tree before the earliest of them: "Several
+// segments at one instant"); and the frontier nodes of a flip
+// (flip_frontiers).
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -75,20 +76,17 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     if (p >= 0 && cut_rank(node(static_cast<std::size_t>(p)), rank) >= rf) return std::nullopt;
     return std::vector<Replay_root>{{u, rf}};
   };
-  if (at_u->size() > 1) {
-    std::size_t earliest = rank[at_u->front()];
-    for (const std::uint32_t x : *at_u) earliest = std::min(earliest, rank[x]);
-    return cut_rank(node(u), rank) >= earliest ? remade(earliest) : std::nullopt;
-  }
-  const std::uint32_t segment = at_u->front();
+  const auto at_u_has = [&](std::uint32_t x) { return std::binary_search(at_u->begin(), at_u->end(), x); };
   // The segments whose steps changed above the frontier, by rank, with the
-  // nodes their steps are decided again from: u's segment from u, another
-  // (a failure of its own at the same instant, in the crown) from its
-  // topmost failing crown nodes. The frontier is the earliest one's: the
+  // nodes their steps are decided again from: u's segments from u (several
+  // where a crossing passes a third segment's line, say), another (a
+  // failure of its own at the same instant, in the crown) from its topmost
+  // failing crown nodes. The frontier is the earliest one's: the
   // crown's cuts are older than every one of them, so each one's steps
   // there are decided against cuts that stay, and all are decided again
   // before any frontier node is replayed from its log.
-  std::map<std::size_t, std::vector<std::size_t>> starts{{rank[segment], {u}}};
+  std::map<std::size_t, std::vector<std::size_t>> starts;
+  for (const std::uint32_t x : *at_u) starts[rank[x]] = {u};
   std::size_t r = 0;
   bool several = false;
   const auto frontier = [&](std::size_t n) { return cut_rank(node(n), rank) >= r; };
@@ -99,14 +97,13 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     if (cut_rank(node(u), rank) >= r) return remade(r);
     replayed.clear();
     std::map<std::size_t, std::vector<std::size_t>> crown;  // the failing crown nodes of each other segment
-    bool shared = false;  // a failing crown node whose keys two segments decide
-    // A failing node below u above the frontier must be one segment's
-    // alone: its steps are decided again there. Below, the frontier node
-    // above it is replayed. Every segment deciding a failing key there sets
-    // the frontier first: two decide one where their walks' parts end at a
-    // wall of the node's cell and the key is the wall's x order with the
-    // node's cut, and the cut's own segment, one of them, puts the node on
-    // the frontier.
+    // At a failing node below u above the frontier, the steps of each
+    // segment deciding a failing key there are decided again, from there or
+    // from a start above. Below, the frontier node above it is replayed.
+    // Every such segment sets the frontier first: two decide one key where
+    // their walks' parts end at a wall of the node's cell and the key is the
+    // wall's x order with the node's cut, and the cut's own segment, one of
+    // them, puts the node on the frontier.
     for (const std::int32_t f : nodes) {
       std::size_t top = static_cast<std::size_t>(f);
       bool under = false;
@@ -124,20 +121,20 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
       }
       const std::optional<std::vector<std::uint32_t>> others = changing(top);
       if (!others) return std::nullopt;
-      shared = shared || others->size() > 1;
       for (const std::uint32_t other : *others) {
         // A segment earlier than the frontier's lowers it: the pass is made again.
         if (starts.emplace(rank[other], std::vector<std::size_t>{}).second && rank[other] < r) grew = true;
-        if (other != segment) crown[rank[other]].push_back(top);
+        if (!at_u_has(other)) crown[rank[other]].push_back(top);
       }
     }
     if (grew) continue;
-    if (shared) return std::nullopt;
     // A segment whose failing nodes all fell below the frontier as it rose
     // (its own cuts) has its changes made by the frontier nodes' replays
     // alone; if it is the earliest, it still set the frontier.
     several = starts.size() > 1;
-    std::erase_if(starts, [&](const auto& e) { return e.first != rank[segment] && !crown.count(e.first); });
+    std::erase_if(starts, [&](const auto& e) {
+      return !at_u_has(scene_.priority_order[e.first]) && !crown.count(e.first);
+    });
     for (auto& [ro, at] : crown) {
       const std::set<std::size_t> failing_here(at.begin(), at.end());
       for (const std::size_t n : at) {

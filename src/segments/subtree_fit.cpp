@@ -9,8 +9,9 @@
 #include <utility>
 
 #include "kvd/detail/kernel/instantiate.hpp"
-#include "kvd/kernel/kernel.hpp"
+#include "kvd/detail/segments/reroute.hpp"
 #include "kvd/detail/segments/subtree_fit.hpp"
+#include "kvd/kernel/kernel.hpp"
 
 namespace kvd::segments {
 
@@ -97,7 +98,9 @@ namespace {
 
 // The steps without the intersection arrivals of a crossing that cannot lie
 // in the cell: the crossing's earlier segment neither walks its edge through
-// the cell nor bounds it. A crossing that goes at this instant, below the
+// the cell nor bounds it, or its later segment's crossing walk does not
+// reach the cell (no cut of a later segment lies above a cell of the fit:
+// drop_unwalked_crossings). A crossing that goes at this instant, below the
 // frontier the rerouted steps stop at, leaves such arrivals: they were kept
 // to be found below the frontier, and are located by signs that no longer
 // put the crossing on that segment's fragment.
@@ -114,6 +117,7 @@ std::vector<Arrival> in_cell(const std::vector<Arrival>& steps, const Cell& cell
     }
     out.push_back(a);
   }
+  drop_unwalked_crossings(out);
   return out;
 }
 

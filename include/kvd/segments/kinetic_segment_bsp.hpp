@@ -20,14 +20,15 @@
 // again from u down to the frontier (the first nodes of cuts of s or later
 // segments: the leaves of B_{s-1} under u), and only the frontier nodes whose
 // arrivals changed are made again, keeping the old subtrees below s's cuts
-// whose arrivals did not change (Subtree_fit::remake). Failing nodes of
-// other segments below u (events of several segments at one instant) have
-// their segments' steps decided again from them too, down to the frontier
-// of the earliest segment deciding a failing key above it, whose nodes are
-// then made again with that segment's cuts first (Replay_root::several); a
-// node left above that frontier must be one segment's. A u on the frontier
-// of the earliest segment deciding a failing key at it is made again as a
-// frontier node is. Otherwise it replays u's subtree. A flip is
+// whose arrivals did not change (Subtree_fit::remake). Several segments
+// deciding failing keys at u, or at failing nodes below it (events of
+// several segments at one instant), have their steps decided again from
+// there too, down to the frontier of the earliest of them, whose nodes are
+// then made again with that segment's cuts first (Replay_root::several). A
+// u on the frontier of the earliest segment deciding a failing key at it is
+// made again as a frontier node is. Otherwise (a failing key with no logged
+// step deciding it, or a u below that frontier) it replays u's subtree,
+// which the small-integer scenes of the tests never need. A flip is
 // local too: the construction walks each segment from endpoint 0 to endpoint
 // 1 whichever is left, so the signs a flip changes are all decided in the
 // cells of the segment's own cuts, and the update is the paper's (section

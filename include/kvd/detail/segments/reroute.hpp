@@ -32,8 +32,10 @@ struct Replay_root {
 };
 
 // Before a frontier node below which several segments' steps were decided
-// again is made again: the log's crossings of a segment whose crossing
-// walk does not reach the node go. Such a crossing, with a segment of the
+// again is made again, and on the steps of every cell a remake fits (the
+// crossings of two segments later than the remade one are located as
+// logged there too): the log's crossings of a segment whose crossing walk
+// does not reach the node go. Such a crossing, with a segment of the
 // frontier's rank or later, is not found by the walks above the frontier
 // and is located as logged; it lands where its walk does not reach only if
 // it went at this instant. (In an exact log a crossing's location and its
