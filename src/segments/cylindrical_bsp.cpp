@@ -75,9 +75,11 @@ void Bsp_builder<K>::steps(std::size_t v, const std::vector<Arrival>& arrivals) 
       case Arrival::Kind::crossings: {
         walked.insert(a.segment);
         std::vector<Arrival> kept;
-        for (std::size_t l = k + 1; l < arrivals.size(); ++l) {
+        // (The segment's intersection arrivals follow its crossing walk in
+        // its block: arrivals are in build order.)
+        for (std::size_t l = k + 1; l < arrivals.size() && arrivals[l].segment == a.segment; ++l) {
           const Arrival& c = arrivals[l];
-          if (c.kind != Arrival::Kind::intersection || c.segment != a.segment) continue;
+          if (c.kind != Arrival::Kind::intersection) continue;
           // Found above v (at an end of v's part); or, while rerouting, to
           // be found below the frontier, where the walk does not go.
           if (c.a == a.a || c.a == a.b || (collect_ && p_.scene().rank[other_segment(c)] >= frontier_)) kept.push_back(c);

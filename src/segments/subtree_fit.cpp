@@ -105,15 +105,15 @@ namespace {
 // to be found below the frontier, and are located by signs that no longer
 // put the crossing on that segment's fragment.
 std::vector<Arrival> in_cell(const std::vector<Arrival>& steps, const Cell& cell) {
+  std::vector<std::uint32_t> walking;  // the segments walking an edge through the cell, sorted
+  for (const Arrival& e : steps)
+    if (e.kind == Arrival::Kind::edges) walking.push_back(e.segment);
+  std::sort(walking.begin(), walking.end());
   std::vector<Arrival> out;
   for (const Arrival& a : steps) {
     if (a.kind == Arrival::Kind::intersection) {
       const std::uint32_t j = other_segment(a);
-      const bool on_j = cell.floor == j || cell.roof == j ||
-                        std::any_of(steps.begin(), steps.end(), [&](const Arrival& e) {
-                          return e.kind == Arrival::Kind::edges && e.segment == j;
-                        });
-      if (!on_j) continue;
+      if (cell.floor != j && cell.roof != j && !std::binary_search(walking.begin(), walking.end(), j)) continue;
     }
     out.push_back(a);
   }
