@@ -96,7 +96,8 @@ std::optional<std::vector<typename Kinetic_segment_bsp<K>::Replay_root>> Kinetic
     r = starts.begin()->first;
     if (cut_rank(node(u), rank) >= r) return remade(r);
     replayed.clear();
-    std::map<std::size_t, std::vector<std::size_t>> crown;  // the failing crown nodes of each other segment
+    // The failing crown nodes of each segment not starting at u.
+    std::map<std::size_t, std::vector<std::size_t>> crown;
     // At a failing node below u above the frontier, the steps of each
     // segment deciding a failing key there are decided again, from there or
     // from a start above. Below, the frontier node above it is replayed.
