@@ -108,7 +108,8 @@ void Aeg_kinetic_bsp<K>::rebuild() {
   flip_.assign(n, {});
   leaf_.assign(2 * n, 0);
   beside_.clear();
-  certify_below(0);
+  points_.clear();
+  certify_below(0, {});
   for (std::size_t e = 0; e < 2 * n; ++e) make_endpoint(e);
   for (std::size_t s = 0; s < n; ++s) make_flip(s);
 }
@@ -338,11 +339,15 @@ void Aeg_kinetic_bsp<K>::make_flip(std::size_t s) {
 }
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::certify_below(std::size_t v) {
+bool Aeg_kinetic_bsp<K>::certify_below(std::size_t v, const Kept& kept, bool inside) {
+  if (points_.size() < tree_.nodes.size()) points_.resize(tree_.nodes.size());
+  const bool top = kept.tops.count(v) > 0;
+  if (inside && !top && !kept.recelled.count(v)) return points_[v];
   const Bsp_node& n = tree_.nodes[v];
   bool points = point_cut(n);
   if (n.kind != Cut_kind::leaf)
-    for (const std::int32_t c : n.child) points = certify_below(static_cast<std::size_t>(c)) || points;
+    for (const std::int32_t c : n.child) points = certify_below(static_cast<std::size_t>(c), kept, inside || top) || points;
+  points_[v] = points;
   // A node kept by an update keeps its certificate while its cell stays.
   const auto it = transient_.find(v);
   if (points || n.parent < 0 || !point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)])) {
@@ -354,11 +359,31 @@ bool Aeg_kinetic_bsp<K>::certify_below(std::size_t v) {
 }
 
 template <class K>
-bool Aeg_kinetic_bsp<K>::points_below(std::size_t v) const {
-  const Bsp_node& n = tree_.nodes[v];
-  if (point_cut(n)) return true;
-  return n.kind != Cut_kind::leaf && (points_below(static_cast<std::size_t>(n.child[0])) ||
-                                      points_below(static_cast<std::size_t>(n.child[1])));
+std::optional<std::string> Aeg_kinetic_bsp<K>::certified_afresh() const {
+  std::optional<std::string> wrong;
+  std::size_t transient = 0;
+  const auto check = [&](const auto& self, std::size_t v) -> bool {
+    const Bsp_node& n = tree_.nodes[v];
+    bool points = point_cut(n);
+    if (n.kind != Cut_kind::leaf)
+      for (const std::int32_t c : n.child) points = self(self, static_cast<std::size_t>(c)) || points;
+    const bool is = !points && n.parent >= 0 && point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)]);
+    const auto it = transient_.find(v);
+    if (is) ++transient;
+    if (wrong) return points;
+    if (v >= points_.size() || static_cast<bool>(points_[v]) != points)
+      wrong = "node " + std::to_string(v) + " (" + cut_name(n) + ") is kept as " +
+              (points ? "holding no point cut below it" : "holding a point cut below it");
+    else if (is != (it != transient_.end()) || (is && !(it->second.id.cell == n.cell)))
+      wrong = "node " + std::to_string(v) + " (" + cut_name(n) + ") has " +
+              (is ? "no transient certificate of its cell" : "a transient certificate, not being transient");
+    return points;
+  };
+  check(check, 0);
+  if (!wrong && transient != transient_.size())
+    wrong = std::to_string(transient_.size()) + " transient certificates are in force for " + std::to_string(transient) +
+            " transient nodes";
+  return wrong;
 }
 
 template <class K>
@@ -480,9 +505,34 @@ std::set<std::size_t> Aeg_kinetic_bsp<K>::changing(const std::vector<Entry>& ent
     if (std::binary_search(points.begin(), points.end(), n.point)) return true;
     return std::any_of(turning.begin(), turning.end(), [&](std::size_t s) { return n.point.on(s); });
   };
-  for (const std::size_t v : roots)
-    for (const std::size_t n : tree_.preorder(v))
-      if (tree_.nodes[n].kind != Cut_kind::leaf && named(tree_.nodes[n])) at.push_back(n);
+  // A cut lies only where the steps of the segment that made it arrived, and
+  // every node on the way logged them: without a flip (whose segment's
+  // points are cut by other segments' steps too), the search goes down only
+  // where those segments' blocks are.
+  std::vector<std::size_t> ranks;
+  for (const std::size_t j : segments) ranks.push_back(scene_.rank[j]);
+  for (const Site_point& p : points) ranks.push_back(point_rank(p, scene_.rank));
+  std::sort(ranks.begin(), ranks.end());
+  ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+  const auto reached = [&](std::size_t n) {
+    if (!turning.empty()) return true;
+    return std::any_of(ranks.begin(), ranks.end(), [&](std::size_t r) {
+      const auto [from, to] = rank_block(log_.at[n], scene_.rank, r);
+      return from != to;
+    });
+  };
+  for (const std::size_t v : roots) {
+    std::vector<std::size_t> stack{v};
+    while (!stack.empty()) {
+      const std::size_t n = stack.back();
+      stack.pop_back();
+      const Bsp_node& q = tree_.nodes[n];
+      if (q.kind == Cut_kind::leaf) continue;
+      if (named(q)) at.push_back(n);
+      for (const std::int32_t c : q.child)
+        if (reached(static_cast<std::size_t>(c))) stack.push_back(static_cast<std::size_t>(c));
+    }
+  }
   std::set<std::size_t> out;
   for (const std::size_t n : at)
     for (auto a = static_cast<std::int32_t>(n); a >= 0 && out.insert(static_cast<std::size_t>(a)).second;)
@@ -538,7 +588,6 @@ bool Aeg_kinetic_bsp<K>::crossing(std::size_t i, std::size_t j) const {
 template <class K>
 bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<std::size_t> dirty, Batch& b) {
   bool changed = false;
-  std::vector<Site_point> was, is;
   // The endpoints beside a slot whose certificates went (taken off it at
   // once: the slot may be used again, and moved, before they are looked at
   // again), and nodes kept whole with a new cell; each with the node the
@@ -586,9 +635,7 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   for (const auto& [v, frontier, several] : roots) {
     from = v;
     if (frontier) near.insert(v);
-    const std::string text = tree_.text(v);
-    const std::vector<Site_point> x = crossings_below(tree_, v);
-    was.insert(was.end(), x.begin(), x.end());
+    if (validate_) fit.ledger().audit(v);
     std::vector<Arrival> arrivals = log_.at[v];
     std::optional<std::size_t> r = frontier;
     const std::int32_t up = tree_.nodes[v].parent;
@@ -612,23 +659,26 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
       fit.discard(v, false);
       builder.replay(v, arrivals);
     }
-    const std::vector<Site_point> y = crossings_below(tree_, v);
-    is.insert(is.end(), y.begin(), y.end());
-    changed = changed || tree_.text(v) != text;
+    changed = fit.ledger().changed(v) || changed;
     ++b.replays;
     b.frontier_replays += frontier.has_value();
   }
+  // The certificates of the nodes made, and of the kept ones with a new
+  // cell (certify_below keeps a node's certificate only with its cell).
+  Kept kept;
+  kept.tops = fit.ledger().kept();
+  for (const auto& r : recelled) kept.recelled.insert(r.first);
+  for (const Replay_root& root : roots) certify_below(root.node, kept);
+  // The ancestors' transience may change with the point cuts below a root:
+  // walking up, each node's other child is read from points_ (every root
+  // is certified by now).
   for (const Replay_root& root : roots) {
-    const std::size_t v = root.node;
-    // The certificates of the nodes made, and of the kept ones with a new
-    // cell (certify_below keeps a node's certificate only with its cell).
-    // The ancestors' transience may change with the point cuts below v:
-    // walking up, while none lies below, each node's other child is read.
-    bool points = certify_below(v);
-    for (std::size_t c = v; tree_.nodes[c].parent >= 0;) {
+    bool points = points_[root.node];
+    for (std::size_t c = root.node; tree_.nodes[c].parent >= 0;) {
       const auto u = static_cast<std::size_t>(tree_.nodes[c].parent);
       const Bsp_node& n = tree_.nodes[u];
-      points = points || point_cut(n) || points_below(static_cast<std::size_t>(n.child[n.child[0] == std::int32_t(c)]));
+      points = points || point_cut(n) || points_[static_cast<std::size_t>(n.child[n.child[0] == std::int32_t(c)])];
+      points_[u] = points;
       const bool is = !points && n.parent >= 0 && point_cut(tree_.nodes[static_cast<std::size_t>(n.parent)]);
       if (!is) transient_.erase(u);
       else if (!transient_.count(u)) make_transient(u);
@@ -644,11 +694,9 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
   b.nodes_rebuilt += builder.added();
   // A crossing cut below a root before and nowhere now: its location, logged
   // above the roots and above the cells taken whole, goes.
-  std::sort(was.begin(), was.end());
-  std::sort(is.begin(), is.end());
-  std::vector<Site_point> lost;
-  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(lost));
-  lost.erase(std::unique(lost.begin(), lost.end()), lost.end());
+  std::vector<std::size_t> nodes;
+  for (const Replay_root& root : roots) nodes.push_back(root.node);
+  const std::vector<Site_point> lost = fit.ledger().gone(nodes, log_, scene_.rank);
   std::set<std::size_t> above(fit.tops().begin(), fit.tops().end());
   for (const Replay_root& root : roots)
     for (std::int32_t a = tree_.nodes[root.node].parent; a >= 0 && above.insert(static_cast<std::size_t>(a)).second;)
@@ -713,6 +761,9 @@ typename Aeg_kinetic_bsp<K>::Batch Aeg_kinetic_bsp<K>::advance() {
   const Segment_rule_counts signs = pred_.counts();
   now_ = b.time;
   update(std::move(entries), b);
+  if (fresh)
+    if (const std::optional<std::string> wrong = certified_afresh())
+      failures_.push_back("after the batch at t = " + k_.to_string(b.time) + ", " + *wrong);
   next_event_time();  // up to the next queue minimum: stale entries off the heap
   queue_.trim([this](const Entry& e) { return stale(e); });
   b.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start - aside).count();

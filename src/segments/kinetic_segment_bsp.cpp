@@ -225,19 +225,15 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
   for (const std::int32_t f : failing)
     for (std::int32_t a = f; a >= 0 && dirty.insert(static_cast<std::size_t>(a)).second;)
       a = tree_.nodes[static_cast<std::size_t>(a)].parent;
-  std::vector<std::string> before;
   std::vector<std::vector<Arrival>> arrivals;
   std::vector<std::vector<std::size_t>> spare;
-  std::vector<Site_point> was, is;
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   Subtree_fit<K> fit(tree_, log_, scene_, builder, dirty,
                      {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}, {}});
   for (const Replay_root& root : roots) {
     const std::size_t v = root.node;
-    before.push_back(tree_.text(v));
+    if (validate_) fit.ledger().audit(v);
     arrivals.push_back(log_.at[v]);
-    const std::vector<Site_point> x = crossings_below(tree_, v);
-    was.insert(was.end(), x.begin(), x.end());
     if (root.rank) spare.push_back(fit.set_aside(v, *root.rank, root.several));
     else {  // replayed whole
       spare.emplace_back();
@@ -249,20 +245,16 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
     const std::size_t v = roots[k].node;
     if (roots[k].rank) fit.remake(v, *roots[k].rank, arrivals[k], std::move(spare[k]));
     else builder.replay(v, arrivals[k]);
-    const std::vector<Site_point> x = crossings_below(tree_, v);
-    is.insert(is.end(), x.begin(), x.end());
-    changed = changed || tree_.text(v) != before[k];
+    changed = fit.ledger().changed(v) || changed;
   }
   added += builder.added();
   // A crossing cut below a root before and nowhere now (both of a crossing's
   // cuts lie below the node where it is found, and one found above a root is
   // kept; a crossing may move from one root's subtree to another's): its
   // certificates above the roots go.
-  std::sort(was.begin(), was.end());
-  std::sort(is.begin(), is.end());
-  std::vector<Site_point> gone;
-  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(gone));
-  gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
+  std::vector<std::size_t> nodes;
+  for (const Replay_root& root : roots) nodes.push_back(root.node);
+  const std::vector<Site_point> gone = fit.ledger().gone(nodes, log_, scene_.rank);
   for (const Site_point& x : gone) {
     const auto it = by_crossing_.find(x);
     if (it == by_crossing_.end()) continue;

@@ -18,7 +18,13 @@ namespace kvd::segments {
 template <class K>
 Subtree_fit<K>::Subtree_fit(Cylindrical_bsp& tree, Build_log& log, const Segment_scene& scene, Bsp_builder<K>& builder,
                             std::set<std::size_t>& dirty, Subtree_fit_hooks hooks)
-    : tree_(tree), log_(log), scene_(scene), builder_(builder), dirty_(dirty), hooks_(std::move(hooks)) {}
+    : tree_(tree),
+      log_(log),
+      scene_(scene),
+      builder_(builder),
+      dirty_(dirty),
+      hooks_(std::move(hooks)),
+      ledger_(tree) {}
 
 template <class K>
 std::vector<std::size_t> Subtree_fit<K>::set_aside(std::size_t v, std::size_t r, bool several) {
@@ -34,6 +40,7 @@ std::vector<std::size_t> Subtree_fit<K>::set_aside(std::size_t v, std::size_t r,
       continue;
     }
     for (const std::int32_t c : node.child) stack.push_back(static_cast<std::size_t>(c));
+    ledger_.forgot(n);
     hooks_.forget(n);
     if (n != v) log_.free.push_back(n);
   }
@@ -209,6 +216,7 @@ bool Subtree_fit<K>::take_whole(std::size_t cell, const std::vector<Arrival>& st
   refresh_cells(cell);
   release(*o);
   spare.erase(o);
+  ledger_.kept(cell);
   return true;
 }
 
@@ -309,6 +317,7 @@ void Subtree_fit<K>::move_node(std::size_t from, std::size_t to) {
     for (const std::int32_t c : d.child) tree_.nodes[static_cast<std::size_t>(c)].parent = static_cast<std::int32_t>(to);
   log_.at[to] = std::move(log_.at[from]);
   log_.at[from].clear();
+  ledger_.moved(from, to);
   hooks_.moved(from, to);
 }
 
@@ -339,6 +348,7 @@ void Subtree_fit<K>::refresh_cells(std::size_t v) {
 template <class K>
 void Subtree_fit<K>::discard(std::size_t v, bool with_root) {
   for (const std::size_t n : tree_.preorder(v)) {
+    ledger_.forgot(n);
     hooks_.forget(n);
     if (n != v || with_root) log_.free.push_back(n);
   }

@@ -371,11 +371,21 @@ private:
   // cuts first; the endpoints beside its nodes gone are found again from
   // the tree's root (they may have moved to another frontier node).
   bool replay(const std::vector<Replay_root>& roots, std::set<std::size_t> dirty, Batch& b);
+  // The cells of an update that took an old subtree whole (Subtree_fit::kept),
+  // and the nodes below them given a new cell.
+  struct Kept {
+    std::set<std::size_t> tops, recelled;
+  };
   // Makes the certificates of the transient nodes in v's subtree (a node is
   // transient when its parent is a point cut and no point cut lies in its
-  // subtree); whether a point cut lies there.
-  bool certify_below(std::size_t v);
-  bool points_below(std::size_t v) const;
+  // subtree); whether a point cut lies there (kept in points_). Below a
+  // kept top, a node whose cell stayed is not visited: its subtree, cell and
+  // parent's cut are as they were, and so are its certificate and points_.
+  bool certify_below(std::size_t v, const Kept& kept, bool inside = false);
+  // Whether the transient nodes' certificates and points_ are those that
+  // certify_below makes afresh (a validation's check of the update's
+  // bookkeeping); if not, what differs.
+  std::optional<std::string> certified_afresh() const;
   bool stale(const Entry& e) const;
 
   K k_;
@@ -388,6 +398,7 @@ private:
   Cylindrical_bsp tree_;
   Build_log log_;
   std::map<std::size_t, Certificate> transient_;  // by node slot
+  std::vector<char> points_;                      // by node slot: whether a point cut lies in its subtree
   // During an update: the certificates of the transient nodes of the
   // replayed subtrees (failing ones left out), and the failing endpoints.
   std::map<Cell, Certificate, Cell_less> spare_;

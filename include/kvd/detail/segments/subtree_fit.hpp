@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "kvd/detail/segments/bsp_builder.hpp"
+#include "kvd/detail/segments/replay_ledger.hpp"
 #include "kvd/segments/segment_scene.hpp"
 
 namespace kvd::segments {
@@ -67,6 +68,10 @@ public:
   // The nodes made above cells taken whole (with cuts of the ranks remade),
   // whose logs may name a crossing gone.
   const std::vector<std::size_t>& tops() const { return tops_; }
+  // What the remakes replaced: the old nodes forgotten, the contents moved,
+  // the cells that took an old subtree whole (below each, every node but
+  // those given a new cell, hooks.recelled, is as it was).
+  Replay_ledger& ledger() { return ledger_; }
 
 private:
   std::vector<std::pair<std::size_t, std::vector<Arrival>>> cells_below(std::size_t v, std::size_t r,
@@ -117,6 +122,7 @@ private:
   std::set<std::size_t>& dirty_;
   Subtree_fit_hooks hooks_;
   std::vector<std::size_t> tops_;
+  Replay_ledger ledger_;
 };
 
 }  // namespace kvd::segments
