@@ -256,6 +256,30 @@ TEST_CASE("two segments' events at one instant, one inside the other's region, a
   CHECK(run.validation_failures().empty());
 }
 
+// Small-integer seed 1138 at t = 2: walls cross in three places at once
+// (s3.0 and s1.0, s3.1 and s6.1, s5.0 and s2.0), and a failing certificate's
+// changed signs are decided by two segments' steps. It starts both
+// segments' reroutes (proofs/segment-local-update.md, "Rerouting on the
+// paper's set"); the batch used to replay a whole subtree (116 nodes made,
+// against 106 now).
+TEST_CASE("a certificate whose changed signs are two segments' starts both reroutes", "[segments][aeg]") {
+  const auto s = kvd::test::small_integer_scene(1138);
+  REQUIRE(s);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, *s);
+  const Exact_time two(mpq_class(2));
+  run.advance_to(Exact_time(mpq_class(199, 100)));
+  REQUIRE(kernel.compare(*run.next_event_time(), two) == 0);
+  const auto b = run.advance();
+  CHECK(b.failing.size() == 7);
+  CHECK(b.replays > 0);
+  CHECK(b.frontier_replays == b.replays);
+  const Kinetic_segment_bsp<Exact_kernel> fresh(kernel, *s, false, Segment_update::subtree, two);
+  CHECK(run.tree().text() == fresh.tree().text());
+  CHECK(same_log(run, pred, two));
+  CHECK(run.validation_failures().empty());
+}
+
 // A vertex event (seed 003, Figure 2, a case of disjoint segments) updated
 // by the frontier replay. s2.1 moves right through s1.0's wall at t = 1,
 // under s1 and above s0; the later s3 crosses every cell between them. Only

@@ -79,8 +79,8 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
   if (entries.empty()) return {};
   const std::vector<std::size_t>& rank = scene_.rank;
   // The signs of the failing certificates that changed, against those they
-  // were made with, grouped by the segment whose steps decide them; each
-  // certificate's changes are one segment's.
+  // were made with, grouped by the segment whose steps decide them; a
+  // certificate whose changes are several segments' starts each group.
   std::map<std::size_t, Change> changes;
   std::vector<std::size_t> unchanged;  // the nodes of certificates none of whose signs changed
   for (const Entry& e : entries) {
@@ -91,21 +91,23 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
     const Certificate& c = held({e.kind, e.index});
     const Decided now = signs(c, e.index);
     if (now.size() != c.decided.size()) return {};
-    std::optional<std::size_t> r;
+    std::set<std::size_t> by;  // the segments whose steps decide the changed keys
     for (std::size_t i = 0; i < now.size(); ++i) {
       if (now[i] == c.decided[i]) continue;
       const Key& k = now[i].first;
-      if (k != c.decided[i].first || (r && *r != latest(k, rank))) return {};
-      r = latest(k, rank);
-      changes[*r].add(k);
+      if (k != c.decided[i].first) return {};
+      const std::size_t r = latest(k, rank);
+      by.insert(r);
+      changes[r].add(k);
       // Only the x order of two of the segment's own points is decided by
       // its cuts alone, below the frontier.
-      if (k.kind != Key::Kind::x_order || point_rank(k.p, rank) != *r || point_rank(k.q, rank) != *r)
-        changes[*r].above.insert(normal(k));
+      if (k.kind != Key::Kind::x_order || point_rank(k.p, rank) != r || point_rank(k.q, rank) != r)
+        changes[r].above.insert(normal(k));
     }
+    // A certificate whose changes are several segments' starts each of them.
     const std::size_t start = e.kind == Aeg_certificate_kind::transient ? e.index : leaf_[e.index];
-    if (r) changes[*r].starts.push_back(start);
-    else unchanged.push_back(start);
+    for (const std::size_t r : by) changes[r].starts.push_back(start);
+    if (by.empty()) unchanged.push_back(start);
   }
   if (changes.empty() || (!unchanged.empty() && changes.size() > 1)) return {};
   changes.begin()->second.starts.insert(changes.begin()->second.starts.end(), unchanged.begin(), unchanged.end());
