@@ -77,7 +77,7 @@ TEMPLATE_TEST_CASE("the root cache gives the kernel's roots and keeps two genera
   CHECK(k.isolations == at + static_cast<std::size_t>(4 * generation));
 }
 
-TEMPLATE_TEST_CASE("trimming the time heap drops the stale entries and keeps the order of the live ones",
+TEMPLATE_TEST_CASE("trimming the time heap drops the stale entries a few at a time and keeps the order of the live ones",
                    "[kinetic][queue]", KVD_ALL_KERNELS) {
   using K = TestType;
   const K k;
@@ -85,7 +85,8 @@ TEMPLATE_TEST_CASE("trimming the time heap drops the stale entries and keeps the
     typename K::Time time;
     int id;
   };
-  kvd::kinetic::Time_heap<K, Entry> heap(k);
+  using Heap = kvd::kinetic::Time_heap<K, Entry>;
+  Heap heap(k);
   std::mt19937 rng(7);
   std::vector<bool> stale;
   std::vector<long> at;
@@ -94,26 +95,30 @@ TEMPLATE_TEST_CASE("trimming the time heap drops the stale entries and keeps the
     stale.push_back(rng() % 4 != 0);  // three in four go stale, as certificates made again do
     heap.push({k.time(typename K::FT(at.back()) / typename K::FT(7)), id});
   }
-  const auto is_stale = [&](const Entry& e) { return static_cast<bool>(stale[static_cast<std::size_t>(e.id)]); };
+  std::size_t looked = 0;  // entries a trim asked about
+  const auto is_stale = [&](const Entry& e) {
+    ++looked;
+    return static_cast<bool>(stale[static_cast<std::size_t>(e.id)]);
+  };
   const std::size_t live = static_cast<std::size_t>(std::count(stale.begin(), stale.end(), false));
   REQUIRE(live > 1024);
-  // The entries at the first call count as left by a sweep: twice as many
-  // stay, and one more makes the heap drop every stale entry, however many
-  // certificates its owner has.
-  const auto push_stale = [&](long time) {
-    stale.push_back(true);
-    heap.push({k.time(typename K::FT(time) / typename K::FT(7)), static_cast<int>(stale.size() - 1)});
-    heap.trim(is_stale);
-  };
+  // The entries pushed before the first call are not swept for then.
   heap.trim(is_stale);
-  for (int i = 0; i < 5000; ++i) push_stale(i % 1000);
-  CHECK(heap.size() == 10000);
-  push_stale(3);
-  CHECK(heap.size() == live);
-  // Then twice what that sweep left, and no more.
-  for (std::size_t i = 0; i < live; ++i) push_stale(static_cast<long>(i % 1000));
-  CHECK(heap.size() == 2 * live);
-  push_stale(3);
+  CHECK(looked == 0);
+  CHECK(heap.size() == 5000);
+  // Each call looks at twice the entries pushed since the last, and 16
+  // more: never a pass over the whole heap at once. Going round, the sweep
+  // drops the stale entries of the start, and keeps up with those pushed.
+  for (int i = 0; i < 5000; ++i) {
+    stale.push_back(true);
+    heap.push({k.time(typename K::FT(i % 1000) / typename K::FT(7)), static_cast<int>(stale.size() - 1)});
+    looked = 0;
+    heap.trim(is_stale);
+    REQUIRE(looked <= 2 + Heap::least);
+  }
+  CHECK(heap.size() < live + live / 4);
+  // With nothing pushed, two rounds of calls at 16 entries leave only the live.
+  for (std::size_t i = 0, calls = 2 * (heap.size() / Heap::least + 1); i < calls; ++i) heap.trim(is_stale);
   CHECK(heap.size() == live);
   // The live entries come off in time order, every one of them.
   std::vector<int> seen;

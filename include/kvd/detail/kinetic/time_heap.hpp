@@ -2,12 +2,13 @@
 // compared by the kernel: exactly in the exact kernel. Entries go stale
 // instead of being removed (their certificate made again or gone); the
 // caller says which are, and they are dropped when they reach the top, or
-// all at once when the heap has doubled since the last such sweep (`trim`).
+// a few at a time by a sweep that goes round the heap (`trim`).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace kvd::kinetic {
@@ -23,11 +24,13 @@ public:
   const Entry& top() const { return entries_.front(); }
   void clear() {
     entries_.clear();
-    kept_.reset();
+    pushed_ = cursor_ = 0;
+    started_ = false;
   }
   void push(const Entry& e) {
     entries_.push_back(e);
     std::push_heap(entries_.begin(), entries_.end(), later());
+    ++pushed_;
   }
   void pop() {
     std::pop_heap(entries_.begin(), entries_.end(), later());
@@ -41,32 +44,63 @@ public:
     return top().time;
   }
 
-  // Drops every stale entry once the heap holds more than twice the entries
-  // the last sweep left (at least 2^10): an entry failing far ahead would
-  // stay otherwise, and the heap would grow with the run. The entries at the
-  // first call, pushed when the owner was made and nearly all live, count
-  // as left by a sweep: sweeping them then would cost a pass over the whole
-  // heap for next to nothing. So the heap holds at most about twice its
-  // live entries, not twice the owner's certificates (most of which may
-  // have no failure ahead), and between two sweeps come at least half as
-  // many pushes as the second looks at: a constant per entry pushed.
+  // Drops stale entries a few at a time, going round the heap from where
+  // the last call stopped: each call looks at twice as many entries as were
+  // pushed since the last one, and at least `least`. An entry that went
+  // stale far ahead would stay otherwise, and the heap would grow with the
+  // run. One round of the heap, of n entries, comes with at most n / 2
+  // pushes, so the heap holds about its live entries and those that went
+  // stale during one round; and no call costs more than a constant times
+  // its own pushes, times log n for each entry it drops from inside (the
+  // sweep used to drop them all at once when the heap had doubled, a pause
+  // of the whole heap in one batch).
+  // The entries pushed before the first call (the owner's certificates when
+  // it was made, nearly all live) are not swept for: that would be a pass
+  // over the whole heap for next to nothing.
   template <class Stale>
   void trim(Stale stale) {
-    if (!kept_) kept_ = entries_.size();
-    if (entries_.size() <= 2 * std::max(*kept_, std::size_t{1} << 10)) return;
-    std::erase_if(entries_, stale);
-    std::make_heap(entries_.begin(), entries_.end(), later());
-    kept_ = entries_.size();
+    std::size_t budget = started_ ? 2 * pushed_ + least : 0;
+    started_ = true;
+    pushed_ = 0;
+    while (budget-- > 0 && !entries_.empty()) {
+      if (cursor_ >= entries_.size()) cursor_ = 0;
+      // The entry moved into a dropped one's place is looked at next.
+      if (stale(entries_[cursor_])) erase(cursor_);
+      else ++cursor_;
+    }
   }
+  static constexpr std::size_t least = 16;
 
 private:
   auto later() const {
     return [k = k_](const Entry& a, const Entry& b) { return k->compare(a.time, b.time) > 0; };
   }
 
+  // Entry i taken out: the last one goes to its place and up or down.
+  void erase(std::size_t i) {
+    const auto later_than = later();
+    entries_[i] = std::move(entries_.back());
+    entries_.pop_back();
+    if (i >= entries_.size()) return;
+    while (i > 0 && later_than(entries_[(i - 1) / 2], entries_[i])) {
+      std::swap(entries_[i], entries_[(i - 1) / 2]);
+      i = (i - 1) / 2;
+    }
+    for (;;) {
+      std::size_t first = i;
+      for (const std::size_t c : {2 * i + 1, 2 * i + 2})
+        if (c < entries_.size() && later_than(entries_[first], entries_[c])) first = c;
+      if (first == i) return;
+      std::swap(entries_[i], entries_[first]);
+      i = first;
+    }
+  }
+
   const K* k_;
   std::vector<Entry> entries_;
-  std::optional<std::size_t> kept_;  // the entries the last sweep left
+  std::size_t pushed_ = 0;  // since the last trim
+  std::size_t cursor_ = 0;  // where the next trim looks first
+  bool started_ = false;    // trimmed since made or cleared
 };
 
 }  // namespace kvd::kinetic
