@@ -46,20 +46,20 @@ public:
 
   // Drops stale entries a few at a time, going round the heap from where
   // the last call stopped: each call looks at twice as many entries as were
-  // pushed since the last one, and at least `least`. An entry that went
-  // stale far ahead would stay otherwise, and the heap would grow with the
-  // run. One round of the heap, of n entries, comes with at most n / 2
-  // pushes, so the heap holds about its live entries and those that went
-  // stale during one round; and no call costs more than a constant times
-  // its own pushes, times log n for each entry it drops from inside (the
-  // sweep used to drop them all at once when the heap had doubled, a pause
-  // of the whole heap in one batch).
+  // pushed since the last one. An entry that went stale far ahead would
+  // stay otherwise, and the heap would grow with the run. One round of the
+  // heap, of n entries, comes with at most n / 2 pushes, so the heap holds
+  // about its live entries and those that went stale during one round; and
+  // no call costs more than a constant times its own pushes (an entry taken
+  // from inside moves the last one to its place, which goes up or down a
+  // few levels on average). The sweep used to drop them all at once when
+  // the heap had doubled: a pause of the whole heap in one batch.
   // The entries pushed before the first call (the owner's certificates when
   // it was made, nearly all live) are not swept for: that would be a pass
   // over the whole heap for next to nothing.
   template <class Stale>
   void trim(Stale stale) {
-    std::size_t budget = started_ ? 2 * pushed_ + least : 0;
+    std::size_t budget = started_ ? 2 * pushed_ : 0;
     started_ = true;
     pushed_ = 0;
     while (budget-- > 0 && !entries_.empty()) {
@@ -69,7 +69,6 @@ public:
       else ++cursor_;
     }
   }
-  static constexpr std::size_t least = 16;
 
 private:
   auto later() const {
