@@ -232,7 +232,8 @@ bool Kinetic_segment_bsp<K>::replay(const std::vector<Replay_root>& roots, const
                      {[this](std::size_t n) { forget(n); }, [this](std::size_t f, std::size_t t) { move_keys(f, t); }, {}, {}});
   for (const Replay_root& root : roots) {
     const std::size_t v = root.node;
-    if (validate_) fit.ledger().audit(v);
+    if constexpr (!std::is_same_v<K, Exact_kernel>) fit.ledger().read(v);
+    else if (validate_) fit.ledger().audit(v);
     arrivals.push_back(log_.at[v]);
     if (root.rank) spare.push_back(fit.set_aside(v, *root.rank, root.several));
     else {  // replayed whole

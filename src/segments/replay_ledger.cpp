@@ -53,8 +53,10 @@ bool Replay_ledger::same(std::size_t id, std::size_t slot) const {
 void Replay_ledger::audit(std::size_t v) { audited_[v] = {tree_.text(v), crossings_below(tree_, v)}; }
 
 bool Replay_ledger::changed(std::size_t v) const {
+  const auto it = audited_.find(v);
+  if (trust_reading_) return it->second.text != tree_.text(v);
   const bool out = !same(v, v);
-  if (const auto it = audited_.find(v); it != audited_.end() && out != (it->second.text != tree_.text(v)))
+  if (it != audited_.end() && out != (it->second.text != tree_.text(v)))
     throw std::logic_error("replay ledger: node " + std::to_string(v) + "'s subtree is said " +
                            (out ? "changed" : "unchanged") + " against its text before");
   return out;
@@ -62,6 +64,7 @@ bool Replay_ledger::changed(std::size_t v) const {
 
 std::vector<Site_point> Replay_ledger::gone(const std::vector<std::size_t>& roots, const Build_log& log,
                                             const std::vector<std::size_t>& rank) const {
+  if (trust_reading_) return read_gone(roots);
   std::vector<Site_point> lost;
   for (const auto& [id, n] : forgotten_)
     if (n.kind == Cut_kind::intersection) lost.push_back(n.point);
@@ -90,23 +93,26 @@ std::vector<Site_point> Replay_ledger::gone(const std::vector<std::size_t>& root
     };
     std::erase_if(lost, [&](const Site_point& x) { return std::binary_search(made.begin(), made.end(), x) || located(x); });
   }
-  if (!audited_.empty()) {
-    std::vector<Site_point> was, is;
-    for (const auto& [v, reading] : audited_) was.insert(was.end(), reading.crossings.begin(), reading.crossings.end());
-    for (const std::size_t v : roots) {
-      const std::vector<Site_point> x = crossings_below(tree_, v);
-      is.insert(is.end(), x.begin(), x.end());
-    }
-    std::sort(was.begin(), was.end());
-    std::sort(is.begin(), is.end());
-    std::vector<Site_point> read;
-    std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(read));
-    read.erase(std::unique(read.begin(), read.end()), read.end());
-    if (read != lost)
+  if (!audited_.empty())
+    if (const std::vector<Site_point> read = read_gone(roots); read != lost)
       throw std::logic_error("replay ledger: " + std::to_string(lost.size()) + " crossings said gone, " +
                              std::to_string(read.size()) + " read gone from the subtrees");
-  }
   return lost;
+}
+
+std::vector<Site_point> Replay_ledger::read_gone(const std::vector<std::size_t>& roots) const {
+  std::vector<Site_point> was, is;
+  for (const auto& [v, reading] : audited_) was.insert(was.end(), reading.crossings.begin(), reading.crossings.end());
+  for (const std::size_t v : roots) {
+    const std::vector<Site_point> x = crossings_below(tree_, v);
+    is.insert(is.end(), x.begin(), x.end());
+  }
+  std::sort(was.begin(), was.end());
+  std::sort(is.begin(), is.end());
+  std::vector<Site_point> read;
+  std::set_difference(was.begin(), was.end(), is.begin(), is.end(), std::back_inserter(read));
+  read.erase(std::unique(read.begin(), read.end()), read.end());
+  return read;
 }
 
 }  // namespace kvd::segments

@@ -36,6 +36,15 @@ public:
   // disagree with that reading (for validation runs). Call before v's
   // subtree is touched.
   void audit(std::size_t v);
+  // Root v's subtree is read before the update, and changed and gone answer
+  // from that reading, as the runs did before the ledger: for the
+  // floating-point kernels, whose signs may contradict each other until a
+  // repair, so that a subtree kept whole need not hold every crossing its
+  // log locates. Call before v's subtree is touched.
+  void read(std::size_t v) {
+    audit(v);
+    trust_reading_ = true;
+  }
 
   // Whether v's subtree differs from v's subtree before the update
   // (Cylindrical_bsp::text). Every old node below v must have been
@@ -55,6 +64,8 @@ private:
   const Bsp_node& old_node(std::size_t id) const;
   // Whether old node `id`'s subtree as it was equals slot's now.
   bool same(std::size_t id, std::size_t slot) const;
+  // The crossings below the roots read before and not now.
+  std::vector<Site_point> read_gone(const std::vector<std::size_t>& roots) const;
 
   const Cylindrical_bsp& tree_;
   std::map<std::size_t, Bsp_node> forgotten_;    // by old node
@@ -66,6 +77,7 @@ private:
     std::vector<Site_point> crossings;
   };
   std::map<std::size_t, Reading> audited_;
+  bool trust_reading_ = false;
 };
 
 }  // namespace kvd::segments
