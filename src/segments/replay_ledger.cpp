@@ -7,16 +7,6 @@
 
 namespace kvd::segments {
 
-namespace {
-
-bool same_cut(const Bsp_node& a, const Bsp_node& b) {
-  if (a.kind != b.kind) return false;
-  if (a.kind == Cut_kind::edge) return a.segment == b.segment;
-  return a.kind == Cut_kind::leaf || a.point == b.point;
-}
-
-}  // namespace
-
 std::size_t Replay_ledger::identity(std::size_t slot) const {
   const auto it = identity_.find(slot);
   return it == identity_.end() ? slot : it->second;

@@ -155,10 +155,6 @@ int sides_shared(const Cell& a, const Cell& b) {
   return (a.left == b.left) + (a.right == b.right) + (a.floor == b.floor) + (a.roof == b.roof);
 }
 
-bool same_cut(const Bsp_node& a, const Bsp_node& b) {
-  return a.kind == b.kind && (a.kind == Cut_kind::edge ? a.segment == b.segment : a.point == b.point);
-}
-
 }  // namespace
 
 template <class K>

@@ -54,6 +54,13 @@ struct Bsp_node {
 // intersection cut).
 inline bool point_cut(const Bsp_node& n) { return n.kind == Cut_kind::vertex || n.kind == Cut_kind::intersection; }
 
+// Whether two nodes have the same cut (two leaves: yes).
+inline bool same_cut(const Bsp_node& a, const Bsp_node& b) {
+  if (a.kind != b.kind) return false;
+  if (a.kind == Cut_kind::edge) return a.segment == b.segment;
+  return a.kind == Cut_kind::leaf || a.point == b.point;
+}
+
 // The slot of a cut node's child `side` (0: left or below, 1: right or above).
 inline std::size_t child(const Bsp_node& n, int side) { return static_cast<std::size_t>(n.child[side]); }
 
