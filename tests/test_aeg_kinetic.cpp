@@ -280,6 +280,33 @@ TEST_CASE("a certificate whose changed signs are two segments' starts both rerou
   CHECK(run.validation_failures().empty());
 }
 
+// Small-integer seed 203 at t = 3/2: two transient cells collapse at once,
+// between s3.0 and s2.1 below s4, and between s4.1 and s5.1 below s6. The
+// subtree they name is that of s5.1's vertex cut, the second cut of s5
+// (rank 0) on its path. It used to be replayed whole (138 nodes made); it is
+// now made again from s5's first cut, the root, with only s5's cuts decided
+// again, and the old subtrees beside keep their nodes (60 made).
+TEST_CASE("a named subtree below its segment's first cut is made again from that cut", "[segments][aeg]") {
+  const auto s = kvd::test::small_integer_scene(203);
+  REQUIRE(s);
+  REQUIRE(s->rank[5] == 0);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, *s);
+  const Exact_time at(mpq_class(3, 2));
+  run.advance_to(Exact_time(mpq_class(149, 100)));
+  REQUIRE(kernel.compare(*run.next_event_time(), at) == 0);
+  const auto b = run.advance();
+  CHECK(b.failing.size() == 2);
+  CHECK(b.replays == 1);
+  CHECK(b.frontier_replays == 0);
+  CHECK(b.nodes_rebuilt == 60);
+  const Kinetic_segment_bsp<Exact_kernel> fresh(kernel, *s, false, Segment_update::subtree, at);
+  CHECK(run.tree().text() == fresh.tree().text());
+  CHECK(same_log(run, pred, at));
+  while (run.next_event_time()) run.advance();
+  CHECK(run.validation_failures().empty());
+}
+
 // A vertex event (seed 003, Figure 2, a case of disjoint segments) updated
 // by the frontier replay. s2.1 moves right through s1.0's wall at t = 1,
 // under s1 and above s0; the later s3 crosses every cell between them. Only

@@ -562,6 +562,27 @@ std::vector<std::size_t> Aeg_kinetic_bsp<K>::tops(std::size_t s) const {
 }
 
 template <class K>
+std::size_t Aeg_kinetic_bsp<K>::first_cut(std::size_t v) const {
+  const std::size_t own = cut_rank(tree_.nodes[v], scene_.rank);
+  for (std::int32_t a = tree_.nodes[v].parent;
+       a >= 0 && cut_rank(tree_.nodes[static_cast<std::size_t>(a)], scene_.rank) == own;)
+    v = static_cast<std::size_t>(a), a = tree_.nodes[v].parent;
+  return v;
+}
+
+template <class K>
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::outermost(const std::set<std::size_t>& nodes) const {
+  std::vector<std::size_t> out;
+  for (const std::size_t r : nodes) {
+    bool nested = false;
+    for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
+      nested = nodes.count(static_cast<std::size_t>(a)) > 0;
+    if (!nested) out.push_back(r);
+  }
+  return out;
+}
+
+template <class K>
 bool Aeg_kinetic_bsp<K>::ties(const Bsp_node& n, const Site_point& at, bool identities) const {
   return counting(phases_.ties, [&] {
     return tied(n.kind == Cut_kind::edge ? pred_.side(at, n.segment, now_) : pred_.compare_x(at, n.point, now_),
@@ -811,26 +832,29 @@ void Aeg_kinetic_bsp<K>::update(std::vector<Entry> entries, Batch& b) {
   } else if (!entries.empty()) {
     std::vector<std::size_t> asked;
     std::vector<Replay_root> top = reroutes(entries, asked);
+    // Where the changes are looked for: the reroutes' roots, or the subtrees
+    // the failing certificates name.
+    std::vector<std::size_t> searched;
     if (top.empty()) {
-      // The subtrees the failing certificates name, none below another, their
-      // ties read at the batch's instant (signs that vanish there cost most:
-      // they are why a flip done in place does not read them).
+      // Those subtrees, none below another, their ties read at the batch's
+      // instant (signs that vanish there cost most: they are why a flip
+      // done in place does not read them). Each is made again from its
+      // segment's first cut above it; the cuts of that segment's other
+      // subtrees there change no sign, so only the named subtree is searched.
       std::set<std::size_t> named;
       for (const Entry& e : entries)
         for (const std::size_t r : roots(e)) named.insert(r);
-      for (const std::size_t r : named) {
-        bool nested = false;
-        for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-          nested = named.count(static_cast<std::size_t>(a)) > 0;
-        if (!nested) top.push_back({r, std::nullopt});
-      }
+      searched = outermost(named);
+      std::set<std::size_t> raised;
+      for (const std::size_t r : searched) raised.insert(first_cut(r));
+      for (const std::size_t r : outermost(raised)) top.push_back({r, std::nullopt});
+    } else {
+      for (const Replay_root& r : top) searched.push_back(r.node);
     }
     // In preorder: the endpoints of a node a remake lets go are looked for
     // from the root being made again then.
     sort_in_preorder(tree_, top, [](const Replay_root& r) { return r.node; });
-    std::vector<std::size_t> nodes;
-    for (const Replay_root& r : top) nodes.push_back(r.node);
-    std::set<std::size_t> dirty = changing(entries, nodes, std::move(asked));
+    std::set<std::size_t> dirty = changing(entries, searched, std::move(asked));
     for (const std::size_t v : failing_transient) transient_.erase(v);
     b.changed = replay(top, std::move(dirty), b);
   }

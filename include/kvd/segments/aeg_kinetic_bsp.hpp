@@ -37,12 +37,12 @@
 // flipping segment's cuts), and the subtree of the topmost of those on the
 // certificate's path is made again from the construction's log
 // (kvd/detail/segments/bsp_builder.hpp), or of a cut higher up that passes
-// through the event's point at that instant (above_ties). When that node is
-// its segment's first cut on its path, only its segment's cuts are made
-// again; the later segments' steps are decided down to the cells they make,
-// and a cell whose arrivals are those of an old subtree holding no node
-// where a sign may change (changing) takes it whole, as the kept run's
-// frontier nodes do (Subtree_fit); else the subtree is replayed. The argument that
+// through the event's point at that instant (above_ties), raised to its
+// segment's first cut on its path (first_cut). Only its segment's cuts are
+// made again; the later segments' steps are decided down to the cells they
+// make, and a cell whose arrivals are those of an old subtree holding no
+// node where a sign may change (changing) takes it whole, as the kept run's
+// frontier nodes do (Subtree_fit); a leaf is replayed. The argument that
 // this subtree holds every change (the changed sign is decided at one of
 // those cuts, and the arrivals above it stay) is by the cases of
 // proofs/segment-certificates.md, and is checked against the run that keeps
@@ -337,6 +337,12 @@ private:
   // (ties): a change at `at` may cross that cut, as where a crossing born at
   // an endpoint lies on the other side of a wall with the same abscissa.
   std::size_t above_ties(std::size_t top, const Site_point& at, bool identities = true) const;
+  // The topmost node above v, or v, on whose path to v every cut is of v's
+  // segment: its first cut there (v for a leaf), the node a replay of v
+  // remakes with only that segment's cuts made again.
+  std::size_t first_cut(std::size_t v) const;
+  // The nodes of `nodes` below no other of them.
+  std::vector<std::size_t> outermost(const std::set<std::size_t>& nodes) const;
   // A batch whose failing certificates (transient cells and endpoints, no
   // flip) changed signs, against those each was made with
   // (Certificate::decided), that one segment's steps decide: each changed
