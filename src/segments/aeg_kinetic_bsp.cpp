@@ -191,12 +191,16 @@ void segments_of(const Site_point& p, Out add) {
 
 template <class K>
 void Aeg_kinetic_bsp<K>::index(const Certificate& c, std::size_t index) {
-  if (by_segment_.empty()) by_segment_.resize(pred_.size());
+  if (by_segment_.empty()) return;  // not made yet: naming makes it
   enter(c, index);
   // At most six entries a certificate (a transient cell's two crossings,
   // floor and roof): twelve is twice that.
-  if (indexed_ <= 12 * certificates() + 64) return;
-  for (auto& held : by_segment_) held.clear();
+  if (indexed_ > 12 * certificates() + 64) reindex();
+}
+
+template <class K>
+void Aeg_kinetic_bsp<K>::reindex() {
+  by_segment_.assign(pred_.size(), {});
   indexed_ = 0;
   for (auto& [v, t] : transient_) enter(t, v);
   for (std::size_t e = 0; e < endpoint_.size(); ++e)
@@ -247,7 +251,7 @@ typename Aeg_kinetic_bsp<K>::Certificate& Aeg_kinetic_bsp<K>::held(const Held& h
 
 template <class K>
 std::vector<typename Aeg_kinetic_bsp<K>::Held> Aeg_kinetic_bsp<K>::naming(std::size_t s) {
-  if (by_segment_.empty()) return {};
+  if (by_segment_.empty()) reindex();
   // An entry stays while a certificate in force at its place names s: a
   // node slot's may be another cell's since, and an endpoint's another
   // leaf's.
