@@ -662,12 +662,10 @@ bool Aeg_kinetic_bsp<K>::replay(const std::vector<Replay_root>& roots, std::set<
     if (frontier) near.insert(v);
     if (validate_) fit.ledger().audit(v);
     std::vector<Arrival> arrivals = log_.at[v];
+    // A root not on a frontier is its segment's first cut on its path
+    // (update raised it there, first_cut), or a leaf.
     std::optional<std::size_t> r = frontier;
-    const std::int32_t up = tree_.nodes[v].parent;
-    if (const std::size_t own = cut_rank(tree_.nodes[v], scene_.rank);
-        !r && own < scene_.rank.size() &&
-        (up < 0 || cut_rank(tree_.nodes[static_cast<std::size_t>(up)], scene_.rank) < own))
-      r = own;
+    if (const std::size_t own = cut_rank(tree_.nodes[v], scene_.rank); !r && own < scene_.rank.size()) r = own;
     if (r) {
       // v, the first cut of its segment on its path (or a frontier node of
       // segment r), is made again with the segment's cuts below it; the old

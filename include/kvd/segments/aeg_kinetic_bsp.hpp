@@ -376,7 +376,8 @@ private:
   // that hold no node of `dirty` (Subtree_fit), and makes the certificates
   // of the nodes made or given a new cell; whether the tree changed.
   // A root with a rank is a frontier node, made again with that segment's
-  // cuts first; the endpoints beside its nodes gone are found again from
+  // cuts first; any other is its segment's first cut on its path, or a
+  // leaf; the endpoints beside its nodes gone are found again from
   // the tree's root (they may have moved to another frontier node).
   bool replay(const std::vector<Replay_root>& roots, std::set<std::size_t> dirty, Batch& b);
   // The cells of an update that took an old subtree whole (Subtree_fit::kept),
@@ -421,7 +422,7 @@ private:
   // Per segment, the certificates naming it, some gone since (naming drops
   // them); made from the certificates in force at the first flight-plan
   // change (a run without one does not pay for it: made at the start, its
-  // remaking paused a batch of 12,800 segments for 13 ms), and again when
+  // remaking paused a batch of 12,800 segments for 13 to 15 ms), and again when
   // it holds twice as many entries as they can name, so that its size
   // stays within a constant of theirs at a constant amortized cost per
   // certificate made.
