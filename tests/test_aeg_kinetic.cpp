@@ -99,6 +99,23 @@ void ends_as_fresh(Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predicates<
   CHECK(run.validation_failures().empty());
 }
 
+// The run's next batch, which must be at `at`, stepped to from `before`.
+Aeg_kinetic_bsp<Exact_kernel>::Batch batch_at(Aeg_kinetic_bsp<Exact_kernel>& run, const mpq_class& before,
+                                              const mpq_class& at) {
+  run.advance_to(Exact_time(before));
+  REQUIRE(kernel.compare(*run.next_event_time(), Exact_time(at)) == 0);
+  return run.advance();
+}
+
+// After a batch at `at` of scene s: the tree the subtree update of a run
+// started at `at` holds, and a fresh construction's log.
+void as_fresh_at(const Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predicates<Exact_kernel>& pred,
+                 const Segment_scene& s, const mpq_class& at) {
+  const Kinetic_segment_bsp<Exact_kernel> fresh(kernel, s, false, Segment_update::subtree, Exact_time(at));
+  CHECK(run.tree().text() == fresh.tree().text());
+  CHECK(same_log(run, pred, Exact_time(at)));
+}
+
 // What side_by_side counts.
 struct Compared {
   std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0, flipped = 0, frontier = 0;
@@ -242,16 +259,11 @@ TEST_CASE("two segments' events at one instant, one inside the other's region, a
   REQUIRE(s);
   Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
   const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const Exact_time third(mpq_class(1, 3));
-  run.advance_to(Exact_time(mpq_class(33, 100)));
-  REQUIRE(kernel.compare(*run.next_event_time(), third) == 0);
-  const auto b = run.advance();
+  const auto b = batch_at(run, mpq_class(33, 100), mpq_class(1, 3));
   CHECK(b.changed);
   CHECK(b.replays > 0);
   CHECK(b.frontier_replays == b.replays);
-  const Kinetic_segment_bsp<Exact_kernel> fresh(kernel, *s, false, Segment_update::subtree, third);
-  CHECK(run.tree().text() == fresh.tree().text());
-  CHECK(same_log(run, pred, third));
+  as_fresh_at(run, pred, *s, mpq_class(1, 3));
   while (run.next_event_time()) run.advance();
   CHECK(run.validation_failures().empty());
 }
@@ -267,16 +279,11 @@ TEST_CASE("a certificate whose changed signs are two segments' starts both rerou
   REQUIRE(s);
   Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
   const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const Exact_time two(mpq_class(2));
-  run.advance_to(Exact_time(mpq_class(199, 100)));
-  REQUIRE(kernel.compare(*run.next_event_time(), two) == 0);
-  const auto b = run.advance();
+  const auto b = batch_at(run, mpq_class(199, 100), mpq_class(2));
   CHECK(b.failing.size() == 7);
   CHECK(b.replays > 0);
   CHECK(b.frontier_replays == b.replays);
-  const Kinetic_segment_bsp<Exact_kernel> fresh(kernel, *s, false, Segment_update::subtree, two);
-  CHECK(run.tree().text() == fresh.tree().text());
-  CHECK(same_log(run, pred, two));
+  as_fresh_at(run, pred, *s, mpq_class(2));
   CHECK(run.validation_failures().empty());
 }
 
@@ -292,17 +299,12 @@ TEST_CASE("a named subtree below its segment's first cut is made again from that
   REQUIRE(s->rank[5] == 0);
   Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
   const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const Exact_time at(mpq_class(3, 2));
-  run.advance_to(Exact_time(mpq_class(149, 100)));
-  REQUIRE(kernel.compare(*run.next_event_time(), at) == 0);
-  const auto b = run.advance();
+  const auto b = batch_at(run, mpq_class(149, 100), mpq_class(3, 2));
   CHECK(b.failing.size() == 2);
   CHECK(b.replays == 1);
   CHECK(b.frontier_replays == 0);
   CHECK(b.nodes_rebuilt == 60);
-  const Kinetic_segment_bsp<Exact_kernel> fresh(kernel, *s, false, Segment_update::subtree, at);
-  CHECK(run.tree().text() == fresh.tree().text());
-  CHECK(same_log(run, pred, at));
+  as_fresh_at(run, pred, *s, mpq_class(3, 2));
   while (run.next_event_time()) run.advance();
   CHECK(run.validation_failures().empty());
 }
