@@ -99,8 +99,7 @@ bool Aeg_kinetic_bsp<K>::flip_in_place(const std::vector<std::size_t>& turning, 
   std::set<std::size_t> tops_of_sites;
   for (const Flip_site& f : sites) tops_of_sites.insert(f.v);
   for (const Flip_site& f : sites)
-    for (std::int32_t a = tree_.nodes[f.v].parent; a >= 0; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-      if (tops_of_sites.count(static_cast<std::size_t>(a))) return false;
+    if (below_any(tree_, f.v, [&](std::size_t a) { return tops_of_sites.count(a) > 0; })) return false;
 
   std::vector<std::size_t> edited;
   // The nodes of `top`'s subtree along its wall on `side`, which was at

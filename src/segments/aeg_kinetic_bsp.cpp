@@ -577,12 +577,8 @@ std::size_t Aeg_kinetic_bsp<K>::first_cut(std::size_t v) const {
 template <class K>
 std::vector<std::size_t> Aeg_kinetic_bsp<K>::outermost(const std::set<std::size_t>& nodes) const {
   std::vector<std::size_t> out;
-  for (const std::size_t r : nodes) {
-    bool nested = false;
-    for (std::int32_t a = tree_.nodes[r].parent; a >= 0 && !nested; a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-      nested = nodes.count(static_cast<std::size_t>(a)) > 0;
-    if (!nested) out.push_back(r);
-  }
+  for (const std::size_t r : nodes)
+    if (!below_any(tree_, r, [&](std::size_t a) { return nodes.count(a) > 0; })) out.push_back(r);
   return out;
 }
 

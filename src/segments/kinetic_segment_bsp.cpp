@@ -385,12 +385,11 @@ bool Kinetic_segment_bsp<K>::update(const std::vector<Failing>& failing, Batch& 
       update_ == Segment_update::local ? flip_frontiers(failing, nodes) : std::map<std::size_t, std::size_t>{};
   std::vector<Replay_root> roots;
   for (const std::int32_t n : nodes) {
-    bool below = false;
-    for (std::int32_t a = tree_.nodes[static_cast<std::size_t>(n)].parent; a >= 0 && !below;
-         a = tree_.nodes[static_cast<std::size_t>(a)].parent)
-      below = std::binary_search(nodes.begin(), nodes.end(), a);
-    if (below) continue;
     const auto u = static_cast<std::size_t>(n);
+    if (below_any(tree_, u, [&](std::size_t a) {
+          return std::binary_search(nodes.begin(), nodes.end(), static_cast<std::int32_t>(a));
+        }))
+      continue;
     std::optional<std::vector<Replay_root>> frontier;
     if (update_ == Segment_update::local) frontier = frontier_replay(u, failing, nodes);
     if (const auto r = flips.find(u); !frontier && r != flips.end()) frontier = std::vector<Replay_root>{{u, r->second}};

@@ -62,6 +62,14 @@ std::size_t place_node(Cylindrical_bsp& bsp, Build_log* log, const Bsp_node& nod
 // The children taken from the root down to node n (0: left or below).
 std::vector<std::uint8_t> route(const Cylindrical_bsp& bsp, std::size_t n);
 
+// Whether some proper ancestor a of node n has in(a).
+template <class In>
+bool below_any(const Cylindrical_bsp& bsp, std::size_t n, const In& in) {
+  for (std::int32_t a = bsp.nodes[n].parent; a >= 0; a = bsp.nodes[static_cast<std::size_t>(a)].parent)
+    if (in(static_cast<std::size_t>(a))) return true;
+  return false;
+}
+
 // Sorts items by their nodes (`node(item)`) in the tree's preorder, so that
 // what is done to them in turn does not depend on the slots the nodes
 // happen to hold: a run made afresh numbers its nodes otherwise than one
