@@ -222,14 +222,17 @@ void Bsp_builder<K>::trace(std::size_t to, const Arrival& a) {
   std::vector<std::size_t> path{to};  // `to` and its ancestors, bottom up
   for (std::int32_t n = b_.nodes[to].parent; n >= 0; n = b_.nodes[static_cast<std::size_t>(n)].parent)
     path.push_back(static_cast<std::size_t>(n));
-  for (std::size_t k = path.size() - 1; k > 0; --k) {
-    if (decide_traces_) {
+  if (decide_traces_)
+    for (std::size_t k = path.size() - 1; k > 0; --k) {
       p_.at_node(static_cast<std::int32_t>(path[k]));
       if (step(path[k], a) != path[k - 1])
         throw Bsp_contradiction("cylindrical BSP: a crossing found below a node does not reach it");
     }
-    if (log_) log_in_order(log_->at[path[k]], a, p_.scene().rank);
-  }
+  // Bottom up: a crossing logged at a node was located there from the root,
+  // so every ancestor logs it too, and the first that does ends the climb.
+  if (log_)
+    for (std::size_t k = 1; k < path.size(); ++k)
+      if (!log_in_order(log_->at[path[k]], a, p_.scene().rank)) break;
 }
 
 bool located_before(const Arrival& x, const Arrival& y, const std::vector<std::size_t>& rank) {
@@ -255,14 +258,20 @@ std::pair<std::size_t, std::size_t> rank_block(const std::vector<Arrival>& log, 
   return {static_cast<std::size_t>(from - log.begin()), static_cast<std::size_t>(to - log.begin())};
 }
 
-void log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank) {
+bool log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank) {
+  // Build order (Build_log): by rank, then vertex, crossings, intersections
+  // in the order they are located, edges; one search, not a scan of the
+  // segment's block, which at a high node holds all its crossings.
   const std::size_t r = rank[a.segment];
-  auto at = std::partition_point(log.begin(), log.end(), [&](const Arrival& x) { return rank[x.segment] < r; });
-  while (at != log.end() && rank[at->segment] == r &&
-         (at->kind == Arrival::Kind::vertex || at->kind == Arrival::Kind::crossings ||
-          (at->kind == Arrival::Kind::intersection && located_before(*at, a, rank))))
-    ++at;
-  if (at == log.end() || *at != a) log.insert(at, a);
+  const auto at = std::partition_point(log.begin(), log.end(), [&](const Arrival& x) {
+    const std::size_t rx = rank[x.segment];
+    if (rx != r) return rx < r;
+    return x.kind == Arrival::Kind::vertex || x.kind == Arrival::Kind::crossings ||
+           (x.kind == Arrival::Kind::intersection && located_before(x, a, rank));
+  });
+  if (at != log.end() && *at == a) return false;
+  log.insert(at, a);
+  return true;
 }
 
 // Visits the part from a.a to a.b of segment a.segment down the subtree of

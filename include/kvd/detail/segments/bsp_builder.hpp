@@ -114,9 +114,10 @@ inline std::uint32_t other_segment(const Arrival& c) { return c.a.a == c.segment
 bool located_before(const Arrival& x, const Arrival& y, const std::vector<std::size_t>& rank);
 
 // Inserts intersection arrival a into a node's log at its place in build
-// order, unless it is there: for a crossing found below a replayed node,
-// whose location from the root the replay decides above that node (trace).
-void log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank);
+// order, unless it is there (then false): for a crossing found below a
+// replayed node, whose location from the root the replay decides above that
+// node (trace).
+bool log_in_order(std::vector<Arrival>& log, const Arrival& a, const std::vector<std::size_t>& rank);
 
 // The certificate keys that the arrival decides at the node, read off the
 // node's cut and the arrival's points without arithmetic: the keys that
