@@ -575,6 +575,76 @@ std::size_t Aeg_kinetic_bsp<K>::first_cut(std::size_t v) const {
 }
 
 template <class K>
+std::vector<std::size_t> Aeg_kinetic_bsp<K>::remade_roots(const std::vector<Entry>& entries,
+                                                          std::vector<std::size_t>& searched) const {
+  // Their ties are read at the batch's instant (signs that vanish there cost
+  // most: they are why a flip done in place does not read them). Each is
+  // made again from its segment's first cut above it; the cuts of that
+  // segment's other subtrees there change no sign, so only the named
+  // subtree is searched.
+  std::set<std::size_t> named;
+  for (const Entry& e : entries)
+    for (const std::size_t r : roots(e)) named.insert(r);
+  searched = outermost(named);
+  std::set<std::size_t> raised;
+  for (const std::size_t r : searched) raised.insert(first_cut(r));
+  return outermost(raised);
+}
+
+template <class K>
+std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroute_apart(const std::vector<Entry>& entries,
+                                                           std::vector<std::size_t>& asked,
+                                                           std::vector<std::size_t>& searched,
+                                                           std::vector<std::size_t>& remade) {
+  // Which pass the guards alone, each with the nodes it would change below
+  // (checked only: the check stops them).
+  std::vector<std::pair<Entry, std::vector<std::size_t>>> alone;
+  std::vector<Entry> rest;
+  std::vector<std::size_t> unused;
+  for (const Entry& e : entries) {
+    std::optional<std::vector<std::size_t>> region;
+    reroutes({e}, unused, [&](const std::vector<std::size_t>& nodes, bool nested) {
+      if (!nested) region = nodes;
+      return false;
+    });
+    if (region) alone.emplace_back(e, std::move(*region));
+    else rest.push_back(e);
+  }
+  // What a reroute changes lies below its tops and frontier nodes, and
+  // what the others change inside their subtrees: apart, neither sees the
+  // other's. One that is not apart from the others' subtrees joins them,
+  // until all left are.
+  std::vector<std::size_t> rest_searched, rest_roots;
+  const auto related = [&](std::size_t a, std::size_t b) {
+    return a == b || below_any(tree_, a, [&](std::size_t x) { return x == b; }) ||
+           below_any(tree_, b, [&](std::size_t x) { return x == a; });
+  };
+  const auto apart = [&](const std::vector<std::size_t>& region) {
+    return std::none_of(rest_roots.begin(), rest_roots.end(), [&](std::size_t v) {
+      return std::any_of(region.begin(), region.end(), [&](std::size_t x) { return related(v, x); });
+    });
+  };
+  for (bool joined = true; joined;) {
+    if (alone.empty() || rest.empty()) return {};
+    rest_roots = remade_roots(rest, rest_searched);
+    joined = false;
+    std::erase_if(alone, [&](const auto& a) {
+      if (apart(a.second)) return false;
+      rest.push_back(a.first);
+      return joined = true;
+    });
+  }
+  std::vector<Entry> rerouted;
+  for (const auto& a : alone) rerouted.push_back(a.first);
+  std::vector<Replay_root> top = reroutes(
+      rerouted, asked, [&](const std::vector<std::size_t>& region, bool nested) { return !nested && apart(region); });
+  if (top.empty()) return {};
+  searched = std::move(rest_searched);
+  remade = std::move(rest_roots);
+  return top;
+}
+
+template <class K>
 std::vector<std::size_t> Aeg_kinetic_bsp<K>::outermost(const std::set<std::size_t>& nodes) const {
   std::vector<std::size_t> out;
   for (const std::size_t r : nodes)
@@ -828,27 +898,14 @@ void Aeg_kinetic_bsp<K>::update(std::vector<Entry> entries, Batch& b) {
   if (!turning.empty() && failing_endpoints_.empty() && flip_in_place(turning, failing_transient, b)) {
     b.changed = true;
   } else if (!entries.empty()) {
-    std::vector<std::size_t> asked;
+    // Where the changes are looked for: the reroutes' roots, and the
+    // subtrees the other failing certificates name.
+    std::vector<std::size_t> asked, searched, remade;
     std::vector<Replay_root> top = reroutes(entries, asked);
-    // Where the changes are looked for: the reroutes' roots, or the subtrees
-    // the failing certificates name.
-    std::vector<std::size_t> searched;
-    if (top.empty()) {
-      // Those subtrees, none below another, their ties read at the batch's
-      // instant (signs that vanish there cost most: they are why a flip
-      // done in place does not read them). Each is made again from its
-      // segment's first cut above it; the cuts of that segment's other
-      // subtrees there change no sign, so only the named subtree is searched.
-      std::set<std::size_t> named;
-      for (const Entry& e : entries)
-        for (const std::size_t r : roots(e)) named.insert(r);
-      searched = outermost(named);
-      std::set<std::size_t> raised;
-      for (const std::size_t r : searched) raised.insert(first_cut(r));
-      for (const std::size_t r : outermost(raised)) top.push_back({r, std::nullopt});
-    } else {
-      for (const Replay_root& r : top) searched.push_back(r.node);
-    }
+    if (top.empty() && entries.size() > 1) top = reroute_apart(entries, asked, searched, remade);
+    if (top.empty()) remade = remade_roots(entries, searched);
+    for (const Replay_root& r : top) searched.push_back(r.node);
+    for (const std::size_t r : remade) top.push_back({r, std::nullopt});
     // In preorder: the endpoints of a node a remake lets go are looked for
     // from the root being made again then.
     sort_in_preorder(tree_, top, [](const Replay_root& r) { return r.node; });

@@ -74,8 +74,8 @@ struct Change {
 }  // namespace
 
 template <class K>
-std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& entries,
-                                                      std::vector<std::size_t>& asked) {
+std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& entries, std::vector<std::size_t>& asked,
+                                                      const Reroute_check& proceed) {
   if (entries.empty()) return {};
   const std::vector<std::size_t>& rank = scene_.rank;
   // The signs of the failing certificates that changed, against those they
@@ -260,6 +260,14 @@ std::vector<Replay_root> Aeg_kinetic_bsp<K>::reroutes(const std::vector<Entry>& 
                           std::count(other.tops.begin(), other.tops.end(), static_cast<std::size_t>(a)) > 0))
             nested = true;
   }
+  if (proceed) {
+    std::vector<std::size_t> region;
+    for (const auto& [r, change] : changes) {
+      region.insert(region.end(), change.tops.begin(), change.tops.end());
+      region.insert(region.end(), change.frontiers.begin(), change.frontiers.end());
+    }
+    if (!proceed(region, nested)) return {};
+  }
   Bsp_builder<K> builder(pred_, now_, tree_, &log_);
   if (!validate_) builder.log_traces_only();
   std::vector<Replay_root> out;
@@ -412,7 +420,8 @@ bool Aeg_kinetic_bsp<K>::squeezed(const std::vector<std::size_t>& ends, std::siz
 }
 
 template std::vector<Replay_root> Aeg_kinetic_bsp<Exact_kernel>::reroutes(const std::vector<Entry>&,
-                                                                         std::vector<std::size_t>&);
+                                                                         std::vector<std::size_t>&,
+                                                                         const Reroute_check&);
 template bool Aeg_kinetic_bsp<Exact_kernel>::squeezed(const std::vector<std::size_t>&, std::size_t,
                                                       const std::set<Key>&) const;
 template bool Aeg_kinetic_bsp<Exact_kernel>::abscissa_clear(std::size_t, const std::set<Key>&) const;

@@ -26,7 +26,9 @@
 // certificates changed only signs that one segment's steps decide (two
 // walls crossing, an endpoint passing through a segment; several at one
 // instant, apart or one inside the other's region) reroutes that segment
-// (reroutes).
+// (reroutes). In a batch the guards refuse whole, the certificates that
+// pass them alone are rerouted and the others replayed, when what each
+// part changes lies apart from the other's (reroute_apart).
 // Any other batch, and a flip that meets anything else at its instant, is
 // replayed:
 //
@@ -55,6 +57,7 @@
 #include <compare>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -366,8 +369,27 @@ private:
   // frontier nodes there are returned to be made again with the earliest
   // segment's cuts first, marked `several` ("Several segments at one
   // instant"); the nodes below them where a later segment's steps ask a
-  // sign that changes or vanishes now are added to `asked`.
-  std::vector<Replay_root> reroutes(const std::vector<Entry>& entries, std::vector<std::size_t>& asked);
+  // sign that changes or vanishes now are added to `asked`. With `proceed`,
+  // once the guards have passed and before anything is changed, it is told
+  // the nodes a reroute changes below (every segment's tops and frontier
+  // nodes) and whether they are nested, and the reroute goes on only if it
+  // says so.
+  using Reroute_check = std::function<bool(const std::vector<std::size_t>& region, bool nested)>;
+  std::vector<Replay_root> reroutes(const std::vector<Entry>& entries, std::vector<std::size_t>& asked,
+                                    const Reroute_check& proceed = {});
+  // A batch that reroutes() refuses whole: the certificates that pass its
+  // guards alone are rerouted together, and the others' named subtrees
+  // (raised to first cuts) made again, when no such subtree holds or lies
+  // below a node the reroute changes below, and the reroute is not nested.
+  // Else nothing is
+  // done and nothing returned. On success, `searched` and `remade` are
+  // remade_roots' of the others.
+  std::vector<Replay_root> reroute_apart(const std::vector<Entry>& entries, std::vector<std::size_t>& asked,
+                                         std::vector<std::size_t>& searched, std::vector<std::size_t>& remade);
+  // The subtrees that entries name (roots), none below another
+  // (`searched`), and those raised to their segments' first cuts, none
+  // below another: the roots made again.
+  std::vector<std::size_t> remade_roots(const std::vector<Entry>& entries, std::vector<std::size_t>& searched) const;
   // Whether segments i and j cross just after now: the endpoints of each lie
   // on either side of the other's line.
   bool crossing(std::size_t i, std::size_t j) const;
