@@ -116,6 +116,24 @@ void as_fresh_at(const Aeg_kinetic_bsp<Exact_kernel>& run, const Segment_predica
   CHECK(same_log(run, pred, Exact_time(at)));
 }
 
+// The validated run of small-integer scene `seed`: its batch at `at`,
+// stepped to from `before`, given to expect(scene, batch), then as_fresh_at
+// `at`; with `to_end`, the run goes on to its span's end. No validation
+// fails.
+template <class Expect>
+void small_integer_batch(std::uint64_t seed, const mpq_class& before, const mpq_class& at, Expect expect,
+                         bool to_end = true) {
+  const auto s = kvd::test::small_integer_scene(seed);
+  REQUIRE(s);
+  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
+  const Segment_predicates<Exact_kernel> pred(kernel, *s);
+  expect(*s, batch_at(run, before, at));
+  as_fresh_at(run, pred, *s, at);
+  if (to_end)
+    while (run.next_event_time()) run.advance();
+  CHECK(run.validation_failures().empty());
+}
+
 // What side_by_side counts.
 struct Compared {
   std::size_t batches = 0, kept_batches = 0, replays = 0, nodes_rebuilt = 0, flipped = 0, frontier = 0;
@@ -258,17 +276,11 @@ TEST_CASE("the paper's certificates on small integer scenes over whole spans", "
 // side of s5 at s5's edge cut, below the shared frontier.
 TEST_CASE("two segments' events at one instant, one inside the other's region, are rerouted together",
           "[segments][aeg]") {
-  const auto s = kvd::test::small_integer_scene(9277);
-  REQUIRE(s);
-  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
-  const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const auto b = batch_at(run, mpq_class(33, 100), mpq_class(1, 3));
-  CHECK(b.changed);
-  CHECK(b.replays > 0);
-  CHECK(b.frontier_replays == b.replays);
-  as_fresh_at(run, pred, *s, mpq_class(1, 3));
-  while (run.next_event_time()) run.advance();
-  CHECK(run.validation_failures().empty());
+  small_integer_batch(9277, mpq_class(33, 100), mpq_class(1, 3), [](const Segment_scene&, const auto& b) {
+    CHECK(b.changed);
+    CHECK(b.replays > 0);
+    CHECK(b.frontier_replays == b.replays);
+  });
 }
 
 // Small-integer seed 1138 at t = 2: walls cross in three places at once
@@ -278,16 +290,14 @@ TEST_CASE("two segments' events at one instant, one inside the other's region, a
 // paper's set"); the batch used to replay a whole subtree (116 nodes made,
 // against 106 now).
 TEST_CASE("a certificate whose changed signs are two segments' starts both reroutes", "[segments][aeg]") {
-  const auto s = kvd::test::small_integer_scene(1138);
-  REQUIRE(s);
-  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
-  const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const auto b = batch_at(run, mpq_class(199, 100), mpq_class(2));
-  CHECK(b.failing.size() == 7);
-  CHECK(b.replays > 0);
-  CHECK(b.frontier_replays == b.replays);
-  as_fresh_at(run, pred, *s, mpq_class(2));
-  CHECK(run.validation_failures().empty());
+  small_integer_batch(
+      1138, mpq_class(199, 100), mpq_class(2),
+      [](const Segment_scene&, const auto& b) {
+        CHECK(b.failing.size() == 7);
+        CHECK(b.replays > 0);
+        CHECK(b.frontier_replays == b.replays);
+      },
+      false);
 }
 
 // Small-integer seed 203 at t = 3/2: two transient cells collapse at once,
@@ -297,19 +307,13 @@ TEST_CASE("a certificate whose changed signs are two segments' starts both rerou
 // now made again from s5's first cut, the root, with only s5's cuts decided
 // again, and the old subtrees beside keep their nodes (60 made).
 TEST_CASE("a named subtree below its segment's first cut is made again from that cut", "[segments][aeg]") {
-  const auto s = kvd::test::small_integer_scene(203);
-  REQUIRE(s);
-  REQUIRE(s->rank[5] == 0);
-  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
-  const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const auto b = batch_at(run, mpq_class(149, 100), mpq_class(3, 2));
-  CHECK(b.failing.size() == 2);
-  CHECK(b.replays == 1);
-  CHECK(b.frontier_replays == 0);
-  CHECK(b.nodes_rebuilt == 60);
-  as_fresh_at(run, pred, *s, mpq_class(3, 2));
-  while (run.next_event_time()) run.advance();
-  CHECK(run.validation_failures().empty());
+  small_integer_batch(203, mpq_class(149, 100), mpq_class(3, 2), [](const Segment_scene& s, const auto& b) {
+    REQUIRE(s.rank[5] == 0);
+    CHECK(b.failing.size() == 2);
+    CHECK(b.replays == 1);
+    CHECK(b.frontier_replays == 0);
+    CHECK(b.nodes_rebuilt == 60);
+  });
 }
 
 // Small-integer seed 10 at t = 1/2 (order s5 s4 s6 s0 s3 s2 s1): three
@@ -322,18 +326,12 @@ TEST_CASE("a named subtree below its segment's first cut is made again from that
 // 78 nodes made, 56 now.
 TEST_CASE("a batch refused whole reroutes the certificates that pass alone, the others' subtrees made again",
           "[segments][aeg]") {
-  const auto s = kvd::test::small_integer_scene(10);
-  REQUIRE(s);
-  Aeg_kinetic_bsp<Exact_kernel> run(kernel, *s, true);
-  const Segment_predicates<Exact_kernel> pred(kernel, *s);
-  const auto b = batch_at(run, mpq_class(49, 100), mpq_class(1, 2));
-  CHECK(b.failing.size() == 3);
-  CHECK(b.replays == 3);
-  CHECK(b.frontier_replays == 2);
-  CHECK(b.nodes_rebuilt == 56);
-  as_fresh_at(run, pred, *s, mpq_class(1, 2));
-  while (run.next_event_time()) run.advance();
-  CHECK(run.validation_failures().empty());
+  small_integer_batch(10, mpq_class(49, 100), mpq_class(1, 2), [](const Segment_scene&, const auto& b) {
+    CHECK(b.failing.size() == 3);
+    CHECK(b.replays == 3);
+    CHECK(b.frontier_replays == 2);
+    CHECK(b.nodes_rebuilt == 56);
+  });
 }
 
 // A vertex event (seed 003, Figure 2, a case of disjoint segments) updated

@@ -381,9 +381,8 @@ private:
   // guards alone are rerouted together, and the others' named subtrees
   // (raised to first cuts) made again, when no such subtree holds or lies
   // below a node the reroute changes below, and the reroute is not nested.
-  // Else nothing is
-  // done and nothing returned. On success, `searched` and `remade` are
-  // remade_roots' of the others.
+  // Else nothing is done and nothing returned. On success, `searched` and
+  // `remade` are remade_roots' of the others.
   std::vector<Replay_root> reroute_apart(const std::vector<Entry>& entries, std::vector<std::size_t>& asked,
                                          std::vector<std::size_t>& searched, std::vector<std::size_t>& remade);
   // The subtrees that entries name (roots), none below another
